@@ -1,0 +1,102 @@
+"""One project-wide numba ``jit`` wrapper.
+
+Every compiled kernel in the library goes through :func:`jit` so that the
+defaults live in one place: ``nopython`` (no object mode), ``nogil``,
+``cache=True`` and one eagerly-declared signature at most.
+
+Environment
+-----------
+``SIE_NUMBA_CACHE=0``
+    Turn the on-disk cache off (compile in every process).
+
+Robustness
+----------
+* A read-only package directory: numba itself falls back to the user-wide
+  cache directory (or ``NUMBA_CACHE_DIR``); if no location is writable at
+  all, numba refuses ``cache=True`` at decoration time, and we then compile
+  without a cache instead of failing at import.
+* A corrupt cache index (a truncated ``.nbi`` file, e.g. from a killed
+  process) makes numba raise an unpickling error on first call; we detect
+  unreadable index files of this package at import and remove them, or turn
+  caching off if they cannot be removed.
+"""
+from __future__ import annotations
+
+import os
+import pickle
+import warnings
+from pathlib import Path
+
+import numba
+
+__all__ = ["jit", "CACHE_ENABLED"]
+
+_OFF = {"0", "false", "no", "off"}
+CACHE_ENABLED = os.environ.get("SIE_NUMBA_CACHE", "1").strip().lower() not in _OFF
+
+
+def _index_files():
+    """Numba cache index files that may belong to this package."""
+    here = Path(__file__).resolve().parent
+    roots = [here / "__pycache__"]
+    user_dir = os.environ.get("NUMBA_CACHE_DIR")
+    if user_dir:
+        roots.append(Path(user_dir))
+    for root in roots:
+        if root.is_dir():
+            yield from root.rglob("*.nbi")
+
+
+def _sanitize_cache() -> bool:
+    """Remove unreadable cache index files; return False if caching must be off."""
+    ok = True
+    for index in _index_files():
+        try:
+            with open(index, "rb") as fh:
+                pickle.load(fh)  # the version header
+                stamp_and_overloads = fh.read()
+            pickle.loads(stamp_and_overloads)
+        except Exception:  # any unpickling error means the file is unusable
+            try:
+                index.unlink()
+            except OSError:
+                ok = False
+    return ok
+
+
+if CACHE_ENABLED and not _sanitize_cache():
+    warnings.warn(
+        "sie: a corrupt numba cache index could not be removed; compiling without the cache",
+        RuntimeWarning,
+        stacklevel=2,
+    )
+    CACHE_ENABLED = False
+
+
+def jit(signature=None, **options):
+    """Compile a small, pure numeric kernel with the library's defaults.
+
+    Parameters
+    ----------
+    signature : str or numba signature, optional
+        One eager signature (compiling several signatures eagerly is what
+        makes imports slow; we never do).
+    **options
+        Extra numba options (rarely needed); ``cache``, ``nopython`` and
+        ``nogil`` are fixed here.
+    """
+    opts = dict(nopython=True, nogil=True, cache=CACHE_ENABLED, error_model="numpy")
+    opts.update(options)
+
+    def decorate(fn):
+        args = (signature,) if signature is not None else ()
+        try:
+            return numba.jit(*args, **opts)(fn)
+        except RuntimeError as exc:  # "cannot cache function ...: no locator available"
+            if not opts.get("cache"):
+                raise
+            warnings.warn(f"sie: numba cache unavailable ({exc}); compiling without it",
+                          RuntimeWarning, stacklevel=2)
+            return numba.jit(*args, **{**opts, "cache": False})(fn)
+
+    return decorate

@@ -1,0 +1,90 @@
+"""Exceptions raised by :mod:`sie` (all subclasses of ``ValueError``).
+
+Every message names the offending argument and says what is allowed.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = [
+    "SIEInputError",
+    "InvalidOrderError",
+    "InvalidExponentError",
+    "InvalidCoefficientError",
+    "InvalidEndConditionError",
+    "SideConditionError",
+    "CallableOutputError",
+    "InvalidBreakpointError",
+    "EvaluationPointError",
+]
+
+
+class SIEInputError(ValueError):
+    """Base class: an argument of an :mod:`sie` function is not admissible."""
+
+
+class InvalidOrderError(SIEInputError):
+    """``n`` (number of nodes / unknowns) is not an admissible integer."""
+
+
+class InvalidExponentError(SIEInputError):
+    """A Jacobi exponent is not > -1 (or not finite)."""
+
+
+class InvalidCoefficientError(SIEInputError):
+    """``a`` or ``b`` is not finite, or ``b == 0``."""
+
+
+class InvalidEndConditionError(SIEInputError):
+    """``left``/``right`` is not one of "bounded", "singular"."""
+
+
+class SideConditionError(SIEInputError):
+    """``total`` missing for index 1, given for another index, or not finite."""
+
+
+class CallableOutputError(SIEInputError):
+    """A user callable returned the wrong shape or a non-finite value."""
+
+
+class InvalidBreakpointError(SIEInputError):
+    """A break point is not a finite number strictly inside (-1, 1)."""
+
+
+class EvaluationPointError(SIEInputError):
+    """An evaluation point is not finite or lies where the quantity is infinite."""
+
+
+def check_finite_real(name: str, value, error=SIEInputError) -> float:
+    """Return ``value`` as a float or raise ``error`` naming ``name``."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise error(f"{name} must be a finite real number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise error(f"{name} must be a finite real number, got {v!r}")
+    return v
+
+
+def check_order(n, minimum: int = 1, what: str = "") -> int:
+    """Return ``n`` as an int >= ``minimum`` or raise :class:`InvalidOrderError`."""
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer, float, np.floating)):
+        raise InvalidOrderError(f"n must be an integer >= {minimum}{what}, got {n!r}")
+    if isinstance(n, (float, np.floating)):
+        if not math.isfinite(n) or n != int(n):
+            raise InvalidOrderError(f"n must be an integer >= {minimum}{what}, got {n!r}")
+    n = int(n)
+    if n < minimum:
+        raise InvalidOrderError(f"n must be an integer >= {minimum}{what}, got {n}")
+    return n
+
+
+def check_exponent(name: str, value) -> float:
+    """Return a Jacobi exponent as float, requiring finiteness and > -1."""
+    v = check_finite_real(name, value, InvalidExponentError)
+    if v <= -1.0:
+        raise InvalidExponentError(
+            f"{name} must be > -1 (the weight (1-x)^alpha (1+x)^beta must be integrable), got {v!r}")
+    return v

@@ -1,0 +1,457 @@
+"""Tests for ``sie.gauss_jacobi(n, alpha, beta) -> (x, w)``.
+
+The rule is meant to satisfy
+
+    int_{-1}^{1} (1-x)^alpha (1+x)^beta g(x) dx  =  sum_i w_i g(x_i)   (deg g <= 2n-1),
+
+with x_i the zeros of the Jacobi polynomial P_n^{(alpha,beta)}, ascending.
+
+Every reference value is computed independently of the library and of scipy,
+in mpmath / exact integer arithmetic (see ``_mpref.py`` for the formulas and
+their sources: DLMF 18.9.2 recurrence, DLMF 18.9.16 = Szegő (4.5.7)
+derivative, Szegő (15.3.5) Christoffel numbers, DLMF 5.12.1 Beta integral).
+
+Requirements covered (numbers refer to the project issue):
+  1. nodes/weights vs. mpmath reference        test_nodes_*, test_weights_*
+  2. sum of weights = mu_0                       test_weights_sum_to_mu0
+  3. exact for polynomials of degree <= 2n-1     test_polynomial_exactness
+  4. continuity across dispatch / special params test_dispatch_sweep_*, test_one_ulp_*
+  5. reflection symmetry (hypothesis)            test_reflection_*, test_gegenbauer_*
+  6. bad input -> ValueError naming the argument test_bad_input_*
+  7. n = 10^5 stays finite and sane              test_large_n_*
+"""
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import mpmath
+import numpy as np
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+from mpmath import mp, mpf
+
+import sie
+
+try:                                   # tests/ is not a package (pytest "prepend" import mode)
+    import _mpref as ref
+except ImportError:                    # pragma: no cover - if tests/ becomes a package
+    from . import _mpref as ref
+
+
+# ---------------------------------------------------------------------------
+# tolerances (from the issue; do not loosen)
+# ---------------------------------------------------------------------------
+NODE_ABS_TOL = 1e-14        # |x_lib - x_ref|
+WEIGHT_REL_TOL = 1e-13      # |w_lib - w_ref| / w_ref
+MU0_REL_TOL = 1e-14         # |sum w - mu_0| / mu_0
+MIRROR_NODE_TOL = 1e-14
+MIRROR_WEIGHT_REL_TOL = 1e-13
+ULP_NODE_TOL = 1e-13
+ULP_WEIGHT_REL_TOL = 1e-13
+# Polynomial exactness: with w_i > 0 and |x_i| <= 1, perturbations dx, dw change
+# sum w x^k by at most (k max|dx| + max|dw/w|) mu_0; a rule accurate to a few
+# ulps (n <= 12, k <= 23) is off by < ~5e-15 mu_0.  The sums are formed exactly
+# (mpmath) so only the library's nodes and weights contribute.
+MOMENT_TOL_REL_MU0 = 1e-14
+
+
+def _pid(n, a, b):
+    return f"n={n}-a={a:g}-b={b:g}"
+
+
+# ---------------------------------------------------------------------------
+# parameter sets
+# ---------------------------------------------------------------------------
+EXPONENTS = (-0.99, -0.5, 0.0, 0.5, 0.99)
+GRID_PAIRS = [(a, b) for a in EXPONENTS for b in EXPONENTS]
+ASYMMETRIC_PAIRS = [(-0.99, 0.99), (0.3, -0.7), (-0.4, -0.6)]
+ALL_PAIRS = list(dict.fromkeys(GRID_PAIRS + ASYMMETRIC_PAIRS))          # 27 pairs
+
+# every node checked for n <= 200; first/last 25 + 20 interior nodes above
+N_FULL = (1, 2, 3, 5, 10, 50, 100, 101, 200)
+N_LARGE = (1000, 10_000)
+
+REFERENCE_CASES = [(n, a, b) for n in N_FULL + N_LARGE for (a, b) in ALL_PAIRS]
+
+# Requirement 4: every n in 20..200 (the method switch is somewhere in there)
+SWEEP_PAIRS = [(0.3, -0.7), (-0.99, 0.99), (0.0, 0.0)]
+SWEEP_CASES = [(n, a, b) for (a, b) in SWEEP_PAIRS for n in range(20, 201)]
+
+
+# ---------------------------------------------------------------------------
+# library vs. mpmath reference (cached: node and weight tests share it)
+# ---------------------------------------------------------------------------
+@functools.lru_cache(maxsize=None)
+def gauss_jacobi_cached(n, alpha, beta):
+    x, w = sie.gauss_jacobi(n, alpha, beta)
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w
+
+
+class Comparison:
+    """Library rule vs. refined roots/weights for the checked node indices."""
+
+    def __init__(self, n, alpha, beta):
+        x, w = gauss_jacobi_cached(n, alpha, beta)
+        self.n, self.alpha, self.beta = n, alpha, beta
+        self.x, self.w = x, w
+        self.index = ref.check_indices(n)
+        self.r = ref.refine_gauss_jacobi(n, alpha, beta, x, self.index)
+        with mp.workdps(ref.DPS):
+            ex, ew = [], []
+            for j, i in enumerate(self.index):
+                if self.r.converged[j]:
+                    ex.append(float(abs(mpf(float(x[i])) - self.r.x[j])))
+                    ew.append(float(abs(mpf(float(w[i])) - self.r.w[j]) / self.r.w[j]))
+                else:
+                    ex.append(math.inf)
+                    ew.append(math.inf)
+            # gaps between consecutive refined roots (they must be distinct roots)
+            self.gaps = [float(self.r.x[j + 1] - self.r.x[j]) for j in range(len(self.index) - 1)]
+        self.node_err = np.array(ex)
+        self.weight_err = np.array(ew)
+
+    def worst(self, err):
+        j = int(np.argmax(err))
+        i = self.index[j]
+        return (f"max error {err[j]:.3e} at node i={i} of n={self.n} "
+                f"(x_lib={self.x[i]!r}, x_ref={mpmath.nstr(self.r.x[j], 20)}, "
+                f"w_lib={self.w[i]!r}, w_ref={mpmath.nstr(self.r.w[j], 20)})")
+
+
+@functools.lru_cache(maxsize=None)
+def comparison(n, alpha, beta):
+    return Comparison(n, alpha, beta)
+
+
+def assert_roots_identified(c: Comparison):
+    """The library's nodes lead Newton to *distinct* zeros of P_n, in order,
+    and the Sturm count says each is the zero with the library's index."""
+    bad = [i for i, ok in zip(c.index, c.r.converged) if not ok]
+    assert not bad, f"Newton from the library's nodes did not converge to a zero of P_n at i={bad[:10]}"
+    assert all(g > 1e-25 for g in c.gaps), (
+        f"refined zeros not strictly increasing/distinct: min gap {min(c.gaps):.3e} "
+        "(two library nodes are near the same zero of P_n)")
+    wrong = [(i, k) for i, k in zip(c.index, c.r.sturm_index) if i != k]
+    assert not wrong, f"(library index, true index of the zero it approximates): {wrong[:10]}"
+
+
+def assert_output_contract(x, w, n):
+    assert isinstance(x, np.ndarray) and isinstance(w, np.ndarray)
+    assert x.dtype == np.float64 and w.dtype == np.float64
+    assert x.shape == (n,) and w.shape == (n,)
+    assert np.all(np.isfinite(x)) and np.all(np.isfinite(w))
+    assert np.all(np.diff(x) > 0), "nodes not strictly ascending"
+    assert np.all((x > -1) & (x < 1)), "nodes outside (-1, 1)"
+    assert np.all(w > 0), "non-positive weight"
+
+
+# ---------------------------------------------------------------------------
+# 0. sanity of the reference itself (cheap; a broken reference must not pass silently)
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("n,a,b,x", [
+    (1, 0.3, -0.7, 0.2), (2, -0.99, 0.99, -0.9), (7, 0.5, 0.5, 0.999),
+    (30, -0.4, -0.6, -0.99999), (50, 0.99, -0.99, 0.3), (64, 0.0, 0.0, 1 - 2.0**-40),
+], ids=lambda v: f"{v:g}" if isinstance(v, float) else str(v))
+def test_reference_recurrence_matches_mpmath_jacobi(n, a, b, x):
+    """Fixed-point DLMF 18.9.2 recurrence == mpmath.jacobi (hypergeometric 2F1, DLMF 18.5.7)."""
+    p, pm1 = ref.jacobi_p_pair(n, a, b, x)
+    with mp.workdps(80):
+        want = mpmath.jacobi(n, mpf(a), mpf(b), mpf(x))
+        want_m1 = mpmath.jacobi(n - 1, mpf(a), mpf(b), mpf(x))
+        assert abs(p - want) <= mpf("1e-40") * max(1, abs(want))
+        assert abs(pm1 - want_m1) <= mpf("1e-40") * max(1, abs(want_m1))
+
+
+def test_reference_fixed_point_matches_mpf_recurrence_long():
+    """n = 3000: integer fixed point vs. the same recurrence in plain mpmath mpf."""
+    for x in (0.9999, -0.3, 1 - 1e-9):
+        p, _ = ref.jacobi_p_pair(3000, 0.3, -0.7, x)
+        q = ref.jacobi_p_mpf(3000, 0.3, -0.7, x)
+        assert abs(p - q) <= mpf("1e-35") * max(1, abs(q))
+
+
+def _golub_welsch_guess(n, a, b):
+    """Eigenvalues of the Jacobi matrix in numpy (independent of sie and scipy)."""
+    with mp.workdps(30):
+        a_, b_ = mpf(a), mpf(b)
+        s = a_ + b_
+        diag = [float((b_ - a_) / (s + 2))] + [
+            float((b_**2 - a_**2) / ((2 * k + s) * (2 * k + s + 2))) for k in range(1, n)]
+        # b_k^2 = 4k(k+a)(k+b)(k+s) / ((2k+s)^2 (2k+s+1)(2k+s-1)); for k = 1 the factor
+        # (k+s)/(2k+s-1) = 1 is cancelled by hand (it is 0/0 when s = -1)
+        off = [float(mpmath.sqrt(4 * (1 + a_) * (1 + b_) / ((2 + s) ** 2 * (3 + s))))] + [
+            float(mpmath.sqrt(4 * k * (k + a_) * (k + b_) * (k + s)
+                              / ((2 * k + s) ** 2 * (2 * k + s + 1) * (2 * k + s - 1))))
+            for k in range(2, n)]
+    J = np.diag(diag) + np.diag(off, 1) + np.diag(off, -1)
+    return np.linalg.eigvalsh(J)
+
+
+@pytest.mark.parametrize("n,a,b", [(1, 0.3, -0.7), (17, -0.99, 0.99), (64, 0.3, -0.7), (60, -0.5, -0.5)],
+                         ids=lambda v: f"{v:g}" if isinstance(v, float) else str(v))
+def test_reference_rule_is_a_gauss_rule(n, a, b):
+    """Reference weights sum to mu_0 (to 1e-40) and Sturm indices are 0..n-1,
+    starting from a numpy Golub-Welsch guess (not from the library)."""
+    r = ref.refine_gauss_jacobi(n, a, b, _golub_welsch_guess(n, a, b), range(n))
+    assert all(r.converged)
+    assert r.sturm_index == list(range(n))
+    with mp.workdps(ref.DPS):
+        assert abs(mpmath.fsum(r.w) / ref.mu0(a, b) - 1) < mpf("1e-40")
+        if (a, b) == (-0.5, -0.5):   # Gauss-Chebyshev: x_k = cos((2k+1)pi/(2n)), w_k = pi/n
+            cheb = sorted(mpmath.cos((2 * k + 1) * mpmath.pi / (2 * n)) for k in range(n))
+            assert max(abs(u - v) for u, v in zip(r.x, cheb)) < mpf("1e-40")
+            assert max(abs(wk - mpmath.pi / n) for wk in r.w) < mpf("1e-40")
+
+
+def test_reference_moments_closed_forms():
+    """Binomial/Beta moment formula vs. Legendre (2/(k+1)) and Chebyshev (pi binom(2j,j)/4^j)."""
+    leg = ref.jacobi_moments(0.0, 0.0, 23)
+    cheb = ref.jacobi_moments(-0.5, -0.5, 23)
+    with mp.workdps(ref.DPS):
+        for k in range(24):
+            want_leg = mpf(2) / (k + 1) if k % 2 == 0 else mpf(0)
+            want_cheb = mpmath.pi * mpmath.binomial(k, k // 2) / 4 ** (k // 2) if k % 2 == 0 else mpf(0)
+            assert abs(leg[k] - want_leg) < mpf("1e-40")
+            assert abs(cheb[k] - want_cheb) < mpf("1e-40")
+
+
+# ---------------------------------------------------------------------------
+# 1. nodes and weights against the mpmath reference
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("n,alpha,beta", REFERENCE_CASES, ids=[_pid(*c) for c in REFERENCE_CASES])
+def test_nodes_match_mpmath_reference(n, alpha, beta):
+    c = comparison(n, alpha, beta)
+    assert_output_contract(c.x, c.w, n)
+    assert_roots_identified(c)
+    assert c.node_err.max() <= NODE_ABS_TOL, c.worst(c.node_err)
+
+
+@pytest.mark.parametrize("n,alpha,beta", REFERENCE_CASES, ids=[_pid(*c) for c in REFERENCE_CASES])
+def test_weights_match_mpmath_reference(n, alpha, beta):
+    c = comparison(n, alpha, beta)
+    assert c.weight_err.max() <= WEIGHT_REL_TOL, c.worst(c.weight_err)
+
+
+# 1b. Chebyshev cases in closed form: every node, up to n = 10^5
+#     alpha = beta = -1/2: T_n(cos t) = cos(n t) (DLMF 18.5.1), so
+#        x_k = cos((2k+1) pi / (2n)),  w_k = pi / n          (A&S 25.4.38);
+#     alpha = beta = +1/2: U_n(cos t) = sin((n+1) t)/sin t (DLMF 18.5.2), so
+#        x_k = cos((k+1) pi / (n+1)),  w_k = pi/(n+1) sin^2((k+1) pi/(n+1))
+#     (Christoffel numbers, Szegő (15.3.5)).  Listed ascending: k -> n-1-k.
+CHEBYSHEV_CASES = [(n, a) for a in (-0.5, 0.5) for n in (1, 2, 7, 64, 101, 1000, 10_000, 100_000)]
+
+
+def chebyshev_rule(n, a, index):
+    """Closed-form nodes/weights at the given (ascending) indices, rounded to double."""
+    with mp.workdps(30):
+        if a == -0.5:
+            th = [(2 * (n - 1 - k) + 1) * mp.pi / (2 * n) for k in index]
+            w = [float(mp.pi / n)] * len(th)
+        else:
+            th = [(n - k) * mp.pi / (n + 1) for k in index]
+            w = [float(mp.pi / (n + 1) * mp.sin(t) ** 2) for t in th]
+        return np.array([float(mp.cos(t)) for t in th]), np.array(w)
+
+
+@pytest.mark.parametrize("n,a", CHEBYSHEV_CASES, ids=[f"n={n}-a=b={a:g}" for n, a in CHEBYSHEV_CASES])
+def test_chebyshev_rules_match_closed_form(n, a):
+    x, w = gauss_jacobi_cached(n, a, a)
+    # all nodes up to 10^4; for 10^5 the 500 at each end and every 37th in between
+    index = np.arange(n) if n <= 10_000 else np.unique(np.r_[0:500, n - 500:n, 0:n:37])
+    x, w = x[index], w[index]
+    x_ref, w_ref = chebyshev_rule(n, a, index.tolist())   # correctly rounded (~1e-16 rel)
+    ex = np.abs(x - x_ref)
+    ew = np.abs(w - w_ref) / w_ref
+    i, j = int(np.argmax(ex)), int(np.argmax(ew))
+    assert ex[i] <= NODE_ABS_TOL, f"node error {ex[i]:.3e} at i={index[i]}: {x[i]!r} vs {x_ref[i]!r}"
+    assert ew[j] <= WEIGHT_REL_TOL, f"weight rel. error {ew[j]:.3e} at i={index[j]}: {w[j]!r} vs {w_ref[j]!r}"
+
+
+# ---------------------------------------------------------------------------
+# 2. sum of the weights is the zeroth moment
+# ---------------------------------------------------------------------------
+N_MU0 = (1, 2, 5, 50, 100, 101, 1000, 10_000)
+MU0_CASES = ([(n, a, b) for n in N_MU0 for (a, b) in ALL_PAIRS]
+             + [(100_000, a, b) for (a, b) in [(-0.99, 0.99), (0.3, -0.7), (0.0, 0.0)]])
+
+
+@pytest.mark.parametrize("n,alpha,beta", MU0_CASES, ids=[_pid(*c) for c in MU0_CASES])
+def test_weights_sum_to_mu0(n, alpha, beta):
+    """sum_i w_i = mu_0 = 2^(a+b+1) Gamma(a+1) Gamma(b+1) / Gamma(a+b+2)  (DLMF 5.12.1)."""
+    _, w = gauss_jacobi_cached(n, alpha, beta)
+    total = math.fsum(w)                     # correctly rounded sum of the library's weights
+    mu0 = ref.mu0(alpha, beta)
+    with mp.workdps(ref.DPS):
+        rel = float(abs(mpf(total) - mu0) / mu0)
+    assert rel <= MU0_REL_TOL, f"|sum w - mu0|/mu0 = {rel:.3e} (sum w = {total!r}, mu0 = {mpmath.nstr(mu0, 20)})"
+
+
+# ---------------------------------------------------------------------------
+# 3. exact for x^k, k <= 2n-1
+# ---------------------------------------------------------------------------
+EXACTNESS_CASES = [(n, a, b) for n in range(1, 13) for (a, b) in ALL_PAIRS]
+
+
+@pytest.mark.parametrize("n,alpha,beta", EXACTNESS_CASES, ids=[_pid(*c) for c in EXACTNESS_CASES])
+def test_polynomial_exactness(n, alpha, beta):
+    """sum_i w_i x_i^k = int (1-x)^a (1+x)^b x^k dx for k = 0..2n-1 (moments: DLMF 5.12.1)."""
+    x, w = gauss_jacobi_cached(n, alpha, beta)
+    moments = ref.jacobi_moments(alpha, beta, 2 * n - 1)
+    with mp.workdps(ref.DPS):
+        xs = [mpf(float(v)) for v in x]
+        ws = [mpf(float(v)) for v in w]
+        tol = MOMENT_TOL_REL_MU0 * moments[0]
+        errs = [abs(mpmath.fsum(wi * xi**k for wi, xi in zip(ws, xs)) - moments[k])
+                for k in range(2 * n)]
+        k_worst = max(range(2 * n), key=lambda k: errs[k])
+        assert errs[k_worst] <= tol, (
+            f"degree k={k_worst}: |sum w x^k - m_k| = {float(errs[k_worst]):.3e} "
+            f"= {float(errs[k_worst] / moments[0]):.3e} mu_0")
+
+
+# ---------------------------------------------------------------------------
+# 4a. continuity across the method switch: every n = 20..200 against mpmath
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("n,alpha,beta", SWEEP_CASES, ids=[_pid(*c) for c in SWEEP_CASES])
+def test_dispatch_sweep_nodes(n, alpha, beta):
+    c = comparison(n, alpha, beta)
+    assert_roots_identified(c)
+    assert c.node_err.max() <= NODE_ABS_TOL, c.worst(c.node_err)
+
+
+@pytest.mark.parametrize("n,alpha,beta", SWEEP_CASES, ids=[_pid(*c) for c in SWEEP_CASES])
+def test_dispatch_sweep_weights(n, alpha, beta):
+    c = comparison(n, alpha, beta)
+    assert c.weight_err.max() <= WEIGHT_REL_TOL, c.worst(c.weight_err)
+
+
+# ---------------------------------------------------------------------------
+# 4b. special parameters: a one-ulp nudge must not change the rule
+#     (d x_i / d alpha is O(1), so a 2.2e-16 nudge moves the true rule by ~1e-16)
+# ---------------------------------------------------------------------------
+SPECIAL_PAIRS = [(-0.5, -0.5), (0.0, 0.0), (0.5, 0.5), (-0.5, 0.5), (0.5, -0.5)]
+ULP_CASES = [(n, a, b, which, direction)
+             for (a, b) in SPECIAL_PAIRS
+             for which in ("alpha", "beta", "both")
+             for direction in ("up", "down")
+             for n in (3, 50, 101, 1000)]
+
+
+@pytest.mark.parametrize(
+    "n,alpha,beta,which,direction", ULP_CASES,
+    ids=[f"{_pid(n, a, b)}-nudge_{wh}_{d}" for (n, a, b, wh, d) in ULP_CASES])
+def test_one_ulp_nudge_of_special_parameters(n, alpha, beta, which, direction):
+    to = math.inf if direction == "up" else -math.inf
+    a2 = float(np.nextafter(alpha, to)) if which in ("alpha", "both") else alpha
+    b2 = float(np.nextafter(beta, to)) if which in ("beta", "both") else beta
+    assert (a2, b2) != (alpha, beta)
+    x0, w0 = gauss_jacobi_cached(n, alpha, beta)
+    x1, w1 = gauss_jacobi_cached(n, a2, b2)
+    dx = np.max(np.abs(x1 - x0))
+    dw = np.max(np.abs(w1 - w0) / w0)
+    assert dx <= ULP_NODE_TOL, f"nodes moved by {dx:.3e} (alpha={a2!r}, beta={b2!r})"
+    assert dw <= ULP_WEIGHT_REL_TOL, f"weights moved by {dw:.3e} relative (alpha={a2!r}, beta={b2!r})"
+
+
+# ---------------------------------------------------------------------------
+# 5. reflection symmetry: P_n^{(a,b)}(-x) = (-1)^n P_n^{(b,a)}(x)  (DLMF 18.6.1)
+# ---------------------------------------------------------------------------
+exponent = st.floats(min_value=-0.999, max_value=2.0, exclude_max=True, allow_nan=False)
+order = st.integers(min_value=1, max_value=400)
+
+
+@settings(max_examples=30, deadline=None)
+@given(n=order, alpha=exponent, beta=exponent)
+@example(n=1, alpha=-0.999, beta=1.999)
+@example(n=400, alpha=1.999, beta=-0.999)
+@example(n=101, alpha=-0.5, beta=0.5)
+def test_reflection_swaps_alpha_and_beta(n, alpha, beta):
+    """gauss_jacobi(n, b, a) is the mirror image of gauss_jacobi(n, a, b)."""
+    x_ab, w_ab = sie.gauss_jacobi(n, alpha, beta)
+    x_ba, w_ba = sie.gauss_jacobi(n, beta, alpha)
+    dx = np.max(np.abs(x_ba + x_ab[::-1]))
+    dw = np.max(np.abs(w_ba - w_ab[::-1]) / w_ab[::-1])
+    assert dx <= MIRROR_NODE_TOL, f"mirror nodes differ by {dx:.3e}"
+    assert dw <= MIRROR_WEIGHT_REL_TOL, f"mirror weights differ by {dw:.3e} relative"
+
+
+@settings(max_examples=30, deadline=None)
+@given(n=order, alpha=exponent)
+@example(n=1, alpha=0.7)
+@example(n=400, alpha=-0.999)
+@example(n=101, alpha=1.999)
+def test_gegenbauer_rule_is_symmetric(n, alpha):
+    """alpha == beta: x_i = -x_{n-1-i}, w_i = w_{n-1-i}; x = 0 is a node for odd n."""
+    x, w = sie.gauss_jacobi(n, alpha, alpha)
+    dx = np.max(np.abs(x + x[::-1]))
+    dw = np.max(np.abs(w - w[::-1]) / w)
+    assert dx <= MIRROR_NODE_TOL, f"nodes not symmetric: {dx:.3e}"
+    assert dw <= MIRROR_WEIGHT_REL_TOL, f"weights not symmetric: {dw:.3e} relative"
+    if n % 2 == 1:
+        assert abs(x[n // 2]) <= MIRROR_NODE_TOL
+
+
+# ---------------------------------------------------------------------------
+# 6. bad input
+# ---------------------------------------------------------------------------
+BAD_INPUTS = [
+    ("n", (0, 0.5, 0.5)),
+    ("n", (-3, 0.5, 0.5)),
+    ("n", (2.5, 0.5, 0.5)),
+    ("n", (math.nan, 0.5, 0.5)),
+    ("alpha", (5, -1.0, 0.5)),
+    ("beta", (5, 0.5, -1.5)),
+    ("alpha", (5, math.nan, 0.5)),
+    ("beta", (5, 0.5, math.inf)),
+    ("alpha", (5, -math.inf, 0.5)),
+    ("beta", (5, 0.5, math.nan)),
+    ("beta", (5, 0.5, -1.0)),
+]
+
+
+@pytest.mark.parametrize("name,args", BAD_INPUTS,
+                         ids=[f"{name}-n={a[0]}-a={a[1]}-b={a[2]}" for name, a in BAD_INPUTS])
+def test_bad_input_raises_value_error_naming_argument(name, args):
+    with pytest.raises(ValueError) as info:
+        sie.gauss_jacobi(*args)
+    msg = str(info.value)
+    assert re.search(rf"\b{name}\b", msg), f"message does not name {name!r}: {msg!r}"
+
+
+def test_numpy_integer_n_is_accepted():
+    x, w = sie.gauss_jacobi(np.int64(7), 0.3, -0.7)
+    assert_output_contract(x, w, 7)
+
+
+# ---------------------------------------------------------------------------
+# 7. n = 10^5 stays finite
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("alpha,beta", [(-0.99, 0.99), (0.99, -0.99)], ids=["a=-0.99-b=0.99", "a=0.99-b=-0.99"])
+def test_large_n_is_finite_ordered_positive(alpha, beta):
+    n = 100_000
+    x, w = gauss_jacobi_cached(n, alpha, beta)
+    assert_output_contract(x, w, n)
+    mu0 = ref.mu0(alpha, beta)
+    with mp.workdps(ref.DPS):
+        rel = float(abs(mpf(math.fsum(w)) - mu0) / mu0)
+    assert rel <= MU0_REL_TOL, f"|sum w - mu0|/mu0 = {rel:.3e}"
+
+
+@pytest.mark.slow
+def test_large_n_end_nodes_match_mpmath_reference():
+    """Beyond the issue's n <= 1e4: the 6 nodes at each end for n = 10^5, same tolerances."""
+    n, alpha, beta = 100_000, -0.99, 0.99
+    x, w = gauss_jacobi_cached(n, alpha, beta)
+    index = list(range(6)) + list(range(n - 6, n))
+    r = ref.refine_gauss_jacobi(n, alpha, beta, x, index)
+    assert all(r.converged) and r.sturm_index == index
+    with mp.workdps(ref.DPS):
+        ex = [float(abs(mpf(float(x[i])) - r.x[j])) for j, i in enumerate(index)]
+        ew = [float(abs(mpf(float(w[i])) - r.w[j]) / r.w[j]) for j, i in enumerate(index)]
+    assert max(ex) <= NODE_ABS_TOL, f"node errors {['%.2e' % e for e in ex]}"
+    assert max(ew) <= WEIGHT_REL_TOL, f"weight rel. errors {['%.2e' % e for e in ew]}"
