@@ -1,0 +1,430 @@
+"""Gauss-Jacobi collocation for Cauchy singular integral equations of the second kind.
+
+    a psi(s) + (b/pi) PV int_{-1}^{1} psi(t)/(t - s) dt + int_{-1}^{1} k(s,t) psi(t) dt = f(s)
+
+psi = w phi, w(s) = (1-s)^alpha (1+s)^beta, phi = sum_k c_k P_k^{(alpha,beta)}.
+
+The dominant operator maps the basis exactly (sie-math.md item 1; Erdogan,
+Gupta & Cook 1973):
+
+    a w P_k + b H[w P_k] = lambda P_{k-kappa}^{(-alpha,-beta)},
+    lambda = -2^{-kappa} b / sin(pi alpha),   H[g](x) = (1/pi) PV int g(t)/(t-x) dt,
+
+so the equation is projected onto P_m^{(-alpha,-beta)}, m < n - kappa, with the
+Gauss-Jacobi rule of the weight (1-s)^{-alpha}(1+s)^{-beta} at n - kappa nodes;
+that is collocation at the roots of P_{n-kappa}^{(-alpha,-beta)} (Krenk 1975).
+Without a kernel the system is diagonal.  kappa = 1: the side condition
+int psi = mu_0 c_0 = total closes it.  kappa = -1: the projection on m = 0 is
+the solvability condition (Muskhelishvili 1953, sec. 110), reported as
+``Solution.consistency``.
+
+Right-hand sides with kinks: with ``breaks`` the projections are computed by a
+composite rule split at the breaks (so the coefficients are exact to rounding)
+and phi is evaluated pointwise by adding the exact inversion of the truncation
+remainder r = g - Pi g (Muskhelishvili inversion formula, see
+:func:`_inversion_phi`), which converges spectrally in the number of nodes per
+piece.  Without ``breaks`` a kink costs algebraic convergence (the Jacobi series
+of phi then decays only like k^{-2}).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import (CallableOutputError, EvaluationPointError, InvalidBreakpointError,
+                     InvalidCoefficientError, InvalidEndConditionError, SideConditionError,
+                     check_finite_real, check_order)
+from .gaussjacobi import gauss_jacobi
+from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
+from .special import jacobi_moment
+
+__all__ = ["solve", "Solution", "sie_exponents", "Exponents"]
+
+END_CHOICES = ("bounded", "singular")
+_EXTRA_PER_PIECE = 24       # extra nodes per piece of the composite rule (breaks)
+_KERNEL_EXTRA = 16          # t-nodes beyond n for int k(s,t) psi(t) dt
+
+
+# --------------------------------------------------------------------------
+# exponents
+# --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Exponents:
+    """Endpoint exponents of psi = (1-s)^alpha (1+s)^beta phi.
+
+    alpha0 in (0,1) solves cot(pi alpha0) = -a/b; ``alpha0c`` = 1 - alpha0 is
+    stored separately so that exponents within 1e-8 of 0 or 1 keep full
+    relative precision.  ``cot`` = cot(pi alpha) = -a/b, ``sin`` = sin(pi alpha).
+    """
+    alpha: float
+    beta: float
+    kappa: int
+    alpha0: float
+    cot: float
+    sin: float
+
+
+def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
+    """Exponents and index from cot(pi alpha0) = -a/b and the end choices.
+
+    Right end: alpha = alpha0 ("bounded") or alpha0 - 1 ("singular"); left end:
+    beta = 1 - alpha0 ("bounded") or -alpha0 ("singular"); kappa = -(alpha+beta).
+    (Muskhelishvili 1953, ch. 10; Erdogan, Gupta & Cook 1973.)
+    """
+    y = -a / b                                   # cot(pi alpha0)
+    alpha0 = math.atan2(1.0, y) / math.pi        # principal arccot, in (0, 1)
+    alpha0c = math.atan2(1.0, -y) / math.pi      # 1 - alpha0, without cancellation
+    sin0 = 1.0 / math.hypot(1.0, y)              # sin(pi alpha0) > 0
+    alpha = alpha0 if right == "bounded" else -alpha0c
+    beta = alpha0c if left == "bounded" else -alpha0
+    kappa = {("singular", "singular"): 1, ("bounded", "bounded"): -1}.get((left, right), 0)
+    sin_pa = sin0 if right == "bounded" else -sin0  # sin(pi(alpha0 - 1)) = -sin(pi alpha0)
+    return Exponents(alpha, beta, kappa, alpha0, y, sin_pa)
+
+
+# --------------------------------------------------------------------------
+# validation helpers
+# --------------------------------------------------------------------------
+def _call_checked(fn, name, args, shape):
+    try:
+        out = fn(*args)
+    except (ValueError, TypeError, ArithmeticError) as exc:
+        raise CallableOutputError(f"{name} raised {type(exc).__name__}: {exc}") from exc
+    out = np.asarray(out, dtype=float) if not np.iscomplexobj(out) else out
+    if np.iscomplexobj(out):
+        raise CallableOutputError(f"{name} must return real values, got complex")
+    if out.shape != shape:
+        raise CallableOutputError(
+            f"{name} must be vectorised: called with arrays of shape {shape} it must return "
+            f"that shape, got {out.shape}")
+    if not np.all(np.isfinite(out)):
+        bad = np.flatnonzero(~np.isfinite(out.ravel()))[0]
+        where = tuple(float(np.ravel(a)[bad]) for a in args)
+        raise CallableOutputError(f"{name} returned a non-finite value at {where}")
+    return out
+
+
+def _check_breaks(breaks):
+    try:
+        br = np.asarray(breaks, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InvalidBreakpointError(f"breaks must be real numbers in (-1, 1), got {breaks!r}") from None
+    if not np.all(np.isfinite(br)) or np.any(np.abs(br) >= 1.0):
+        raise InvalidBreakpointError(
+            f"breaks must be finite points strictly inside (-1, 1), got {br.tolist()}")
+    return np.unique(br)
+
+
+# --------------------------------------------------------------------------
+# quadrature for projections onto P_m^{(-alpha,-beta)}
+# --------------------------------------------------------------------------
+def _composite_rule(q, alpha, beta, breaks):
+    """Nodes/weights for int (1-s)^alpha (1+s)^beta g(s) ds, g smooth on each piece.
+
+    Pieces split at ``breaks``; the end pieces carry the endpoint singularity in
+    their own Gauss-Jacobi rule ((0, beta) on the left, (alpha, 0) on the right),
+    the other factor is smooth there and multiplies the weights.
+    """
+    edges = np.concatenate([[-1.0], breaks, [1.0]])
+    xs, ws = [], []
+    for i in range(len(edges) - 1):
+        lo, hi = edges[i], edges[i + 1]
+        half = 0.5 * (hi - lo)
+        ea = alpha if i == len(edges) - 2 else 0.0
+        eb = beta if i == 0 else 0.0
+        u, wu = gauss_jacobi(q, ea, eb)
+        # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
+        s = lo + half * (u + 1.0)
+        w = wu * half ** (1.0 + ea + eb)
+        if ea == 0.0:  # the right end is not in this piece: (1-s)^alpha is smooth here
+            w = w * (1.0 - s) ** alpha
+        if eb == 0.0:
+            w = w * (1.0 + s) ** beta
+        xs.append(s)
+        ws.append(w)
+    return np.concatenate(xs), np.concatenate(ws)
+
+
+# --------------------------------------------------------------------------
+# the solution object
+# --------------------------------------------------------------------------
+@dataclass(eq=False)
+class Solution:
+    """Solution psi = w phi of the SIE; call it to evaluate psi.
+
+    Attributes
+    ----------
+    alpha, beta : float
+        Exponents of w(s) = (1-s)^alpha (1+s)^beta.
+    kappa : int
+        Index -(alpha + beta).
+    n : int
+        Number of Jacobi coefficients of phi.
+    coefficients : ndarray
+        c_k with phi = sum_k c_k P_k^{(alpha,beta)} (scipy's normalisation).
+    consistency : float or None
+        kappa = -1: the weighted mean of g = f - int k psi against
+        (1-s)^{-alpha}(1+s)^{-beta}, i.e. int g w^{-1} ds / int w^{-1} ds, in
+        units of f; zero iff the equation is solvable.  None for kappa != -1.
+    a, b : float
+        The coefficients of the equation.
+    """
+    alpha: float
+    beta: float
+    kappa: int
+    n: int
+    coefficients: np.ndarray
+    consistency: float | None
+    a: float
+    b: float
+    _exp: Exponents = field(repr=False)
+    _matrix: np.ndarray | None = field(default=None, repr=False)
+    _remainder: object = field(default=None, repr=False)
+
+    # -- psi and phi ------------------------------------------------------
+    def _points(self, s, name="s"):
+        s = np.asarray(s, dtype=float)
+        if not np.all(np.isfinite(s)):
+            raise EvaluationPointError(f"{name} must be finite real numbers")
+        return s
+
+    def phi(self, s):
+        """phi(s) = psi(s)/w(s) for s in [-1, 1] (a polynomial of degree n-1,
+        plus the pointwise remainder correction when ``breaks`` were given)."""
+        s = self._points(s)
+        if np.any(np.abs(s) > 1.0):
+            raise EvaluationPointError("phi is defined on [-1, 1]; got points outside")
+        out = jacobi_series(self.coefficients, self.alpha, self.beta, s)
+        if self._remainder is not None:
+            out = out + self._remainder.phi(s)
+        return out
+
+    def weight(self, s):
+        """w(s) = (1-s)^alpha (1+s)^beta."""
+        s = np.asarray(s, dtype=float)
+        return (1.0 - s) ** self.alpha * (1.0 + s) ** self.beta
+
+    def __call__(self, s):
+        """psi(s); zero outside [-1, 1]; a singular end itself raises."""
+        s = self._points(s)
+        inside = np.abs(s) < 1.0
+        for end, expo in ((1.0, self.alpha), (-1.0, self.beta)):
+            if expo < 0 and np.any(s == end):
+                raise EvaluationPointError(
+                    f"psi is infinite at s = {end:+g} (singular end, exponent {expo:.6g})")
+        out = np.zeros(s.shape)
+        ends = (np.abs(s) == 1.0)
+        if np.any(inside):
+            si = s[inside]
+            out[inside] = self.weight(si) * self.phi(si)
+        if np.any(ends):  # bounded ends: psi = 0 there
+            out[ends] = 0.0
+        return out
+
+    # -- functionals -----------------------------------------------------
+    def integral(self):
+        """int_{-1}^{1} psi = mu_0 c_0 (orthogonality of P_k, k >= 1, to 1)."""
+        total = jacobi_moment(self.alpha, self.beta) * self.coefficients[0]
+        if self._remainder is not None:
+            total += self._remainder.integral()
+        return float(total)
+
+    def endpoint_value(self, end):
+        """phi(+1) or phi(-1): the factor that stress-intensity factors are built from."""
+        if end not in (1, -1):
+            raise EvaluationPointError(f"end must be +1 or -1, got {end!r}")
+        return float(self.phi(np.array([float(end)]))[0])
+
+    @property
+    def condition(self):
+        """2-norm condition number of the (row-scaled) collocation system."""
+        if self._matrix is None:
+            return 1.0
+        return float(np.linalg.cond(self._matrix))
+
+    # -- Cauchy transform -------------------------------------------------
+    def _dominant_image(self, x):
+        """sum_k c_k P_{k-kappa}^{(-alpha,-beta)}(x)."""
+        c = self.coefficients
+        k = self.kappa
+        if k == 1:
+            cs = c[1:]
+        elif k == 0:
+            cs = c
+        else:
+            cs = np.concatenate([[0.0], c])
+        return jacobi_series(cs, -self.alpha, -self.beta, x)
+
+    def cauchy(self, x):
+        """(1/pi) PV int_{-1}^{1} psi(t)/(t - x) dt for any real x != +-1.
+
+        Inside: H[w P_k] = cot(pi alpha) w P_k - 2^{-kappa}/sin(pi alpha) P_{k-kappa}^{(-alpha,-beta)}
+        (sie-math.md item 1).  Outside, near the interval: the same functions
+        continued analytically, H[psi](x) = [G(x) - 2^{-kappa} sum c_k P_{k-kappa}^{(-alpha,-beta)}(x)] / sin(pi alpha),
+        G(x) = (x-1)^alpha (x+1)^beta phi(x) for x > 1 and (-1)^kappa |x-1|^alpha |x+1|^beta phi(x)
+        for x < -1 (the polynomial part of G at infinity is the second term);
+        far away (where that difference cancels) a Gauss-Jacobi rule on the
+        smooth integrand w phi/(t - x), sized from the Bernstein ellipse.
+        """
+        x = self._points(x, "x")
+        if np.any(np.abs(x) == 1.0):
+            raise EvaluationPointError(
+                "the Cauchy transform is evaluated at x = +-1, where it is infinite or "
+                "undefined; use points inside (-1, 1) or outside [-1, 1]")
+        out = np.empty(x.shape)
+        e = self._exp
+        scale = 2.0 ** (-self.kappa)
+        inside = np.abs(x) < 1.0
+        if np.any(inside):
+            xi = x[inside]
+            out[inside] = e.cot * self(xi) - scale / e.sin * self._dominant_image(xi)
+            if self._remainder is not None:
+                out[inside] = self._remainder.cauchy_inside(xi, self(xi), out[inside])
+        outside = ~inside
+        if np.any(outside):
+            out[outside] = self._cauchy_outside(x[outside])
+        return out
+
+    def _cauchy_outside(self, x):
+        e = self._exp
+        nq = self.n
+        ax = np.abs(x)
+        rho_b = ax + np.sqrt((ax - 1.0) * (ax + 1.0))       # Bernstein ellipse through x
+        # closed form loses ~ rho_b^(n) digits to cancellation; use it only while that is < 1e2
+        near = self.n * np.log(rho_b) <= math.log(1e2)
+        out = np.empty(x.shape)
+        if np.any(near):
+            xn = x[near]
+            base = np.abs(xn - 1.0) ** self.alpha * np.abs(xn + 1.0) ** self.beta
+            sign = np.where(xn < 0, (-1.0) ** self.kappa, 1.0)
+            g = sign * base * jacobi_series(self.coefficients, self.alpha, self.beta, xn)
+            out[near] = (g - 2.0 ** (-self.kappa) * self._dominant_image(xn)) / e.sin
+        far = ~near
+        if np.any(far):
+            xf = x[far]
+            # Gauss: error ~ rho_b^(-2 m) for the analytic part; the polynomial needs m >= n/2
+            need = int(np.ceil(self.n / 2 + 40.0 / (2.0 * np.log(rho_b[far]).min()))) + 8
+            t, w = gauss_jacobi(max(need, nq), self.alpha, self.beta)
+            wf = w * jacobi_series(self.coefficients, self.alpha, self.beta, t)
+            out[far] = (wf[None, :] / (t[None, :] - xf[:, None])).sum(axis=1) / math.pi
+        if self._remainder is not None:
+            out = out + self._remainder.cauchy_outside(x)
+        return out
+
+
+# --------------------------------------------------------------------------
+# the solver
+# --------------------------------------------------------------------------
+def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
+    """Solve a psi + (b/pi) PV int psi/(t-s) dt + int k(s,t) psi(t) dt = f on (-1, 1).
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised right-hand side f(s).
+    a, b : float
+        Coefficients; b != 0.  cot(pi alpha0) = -a/b fixes the exponents.
+    n : int
+        Number of Jacobi coefficients of phi (n >= 2 when kappa = 1).
+    left, right : {"bounded", "singular"}
+        Behaviour of psi at s = -1 and s = +1.
+    kernel : callable, optional
+        Smooth kernel k(s, t), vectorised over two arrays of equal shape.
+    total : float, optional
+        int psi; required when kappa = 1, rejected otherwise.
+    breaks : sequence of float, optional
+        Points in (-1, 1) where f or one of its derivatives jumps.
+
+    Returns
+    -------
+    Solution
+
+    Notes
+    -----
+    Collocation at the roots of P_{n-kappa}^{(-alpha,-beta)} (Erdogan, Gupta &
+    Cook 1973; Krenk 1975): spectral convergence for analytic f and k.
+    """
+    a = check_finite_real("a", a, InvalidCoefficientError)
+    b = check_finite_real("b", b, InvalidCoefficientError)
+    if b == 0.0:
+        raise InvalidCoefficientError(
+            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
+    for name, v in (("left", left), ("right", right)):
+        if v not in END_CHOICES:
+            raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
+    if not callable(f):
+        raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+    if kernel is not None and not callable(kernel):
+        raise CallableOutputError(f"kernel must be a callable k(s, t) or None, got {type(kernel).__name__}")
+    e = sie_exponents(a, b, left, right)
+    kappa = e.kappa
+    n = check_order(n, 2 if kappa == 1 else 1,
+                    " for index 1 (both ends singular)" if kappa == 1 else "")
+    if kappa == 1:
+        if total is None:
+            raise SideConditionError(
+                "total (= int psi) is required when both ends are singular (index 1)")
+        total = check_finite_real("total", total, SideConditionError)
+    elif total is not None:
+        raise SideConditionError(
+            f"total must not be given for index {kappa} (it is only for both ends singular, index 1)")
+    br = _check_breaks(breaks)
+
+    alpha, beta = e.alpha, e.beta
+    lam = -(2.0 ** (-kappa)) * b / e.sin
+    m_eq = n - kappa                           # projected equations, m = 0..m_eq-1
+    if br.size == 0:
+        s, ws = gauss_jacobi(m_eq, -alpha, -beta)
+    else:
+        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
+    h = jacobi_norms(m_eq, -alpha, -beta)
+    fs = _call_checked(f, "f", (s,), s.shape)
+    fhat = jacobi_project(ws * fs, -alpha, -beta, s, m_eq) / h
+
+    matrix = None
+    if kernel is None:
+        c = np.empty(n)
+        if kappa == 1:
+            c[0] = total / jacobi_moment(alpha, beta)
+            c[1:] = fhat / lam
+        elif kappa == 0:
+            c[:] = fhat / lam
+        else:
+            c[:] = fhat[1:] / lam
+        kc = None
+    else:
+        t, wt = gauss_jacobi(n + _KERNEL_EXTRA, alpha, beta)
+        S, T = np.meshgrid(s, t, indexing="ij")
+        kst = _call_checked(kernel, "kernel", (S, T), S.shape)
+        Pt = jacobi_vandermonde(n, alpha, beta, t)              # (nt, n)
+        Ps = jacobi_vandermonde(m_eq, -alpha, -beta, s)         # (q, m_eq)
+        khat = (Ps.T * ws) @ (kst * wt) @ Pt / h[:, None]       # (m_eq, n)
+        A = khat.copy()
+        for m in range(m_eq):
+            k = m + kappa
+            if 0 <= k < n:
+                A[m, k] += lam
+        rhs = fhat.copy()
+        if kappa == 1:
+            side = np.zeros(n)
+            side[0] = abs(lam)                           # row scaled like the others
+            A = np.vstack([side, A])
+            rhs = np.concatenate([[abs(lam) * total / jacobi_moment(alpha, beta)], rhs])
+        elif kappa == -1:
+            A_sq, rhs_sq = A[1:], rhs[1:]
+            A, rhs = A_sq, rhs_sq
+        c = np.linalg.solve(A, rhs)
+        matrix = A
+        kc = khat @ c
+    consistency = None
+    if kappa == -1:
+        consistency = float(fhat[0] - (kc[0] if kc is not None else 0.0))
+
+    sol = Solution(alpha=alpha, beta=beta, kappa=kappa, n=n, coefficients=c,
+                   consistency=consistency, a=a, b=b, _exp=e, _matrix=matrix)
+    if br.size:
+        from .remainder import InversionRemainder
+        sol._remainder = InversionRemainder.build(sol, f, kernel, br, s, ws, fs, fhat, kc, lam)
+    return sol
