@@ -388,10 +388,24 @@ def _interior_weight_constant(n, a, b):
     return math.pi * 2.0 ** (a + b + 1.0) * math.exp(lg)
 
 
+def _boundary_nodes(n, a, b, theta0):
+    """Nodes next to x = 1 by Newton on the dd hypergeometric series, with weights.
+
+    w = C_n / (dP_n/dtheta)^2,  dP_n/dtheta = P_n(1) Q_n'(t) sin(theta).
+    """
+    th, dqt = _newton_boundary(n, a, b, theta0)
+    return th, _c_over_end_value_squared(n, a, b) / (dqt * np.sin(th)) ** 2
+
+
 def _half_small(n, a, b, theta0):
-    """Rung 2 for one half: Newton on the recurrence from given starting angles."""
+    """Rung 2 for one half: Newton on the recurrence from given starting angles,
+    the N_BOUNDARY nodes nearest the end by the dd series (as on rung 3)."""
     th, q = _newton_recurrence(n, a, b, theta0)
-    return th, _weights_from_recurrence(n, a, b, th, q)
+    w = _weights_from_recurrence(n, a, b, th, q)
+    nb = min(N_BOUNDARY, th.size)
+    if nb:
+        th[:nb], w[:nb] = _boundary_nodes(n, a, b, th[:nb])
+    return th, w
 
 
 def _half_asymptotic(n, a, b, m):
@@ -401,10 +415,7 @@ def _half_asymptotic(n, a, b, m):
     th = np.empty(m)
     w = np.empty(m)
     if nb:
-        tb, dqt = _newton_boundary(n, a, b, th0[:nb])
-        th[:nb] = tb
-        # w = C_n / (dP_n/dtheta)^2,  dP_n/dtheta = P_n(1) Q_n'(t) sin(theta)
-        w[:nb] = _c_over_end_value_squared(n, a, b) / (dqt * np.sin(tb)) ** 2
+        th[:nb], w[:nb] = _boundary_nodes(n, a, b, th0[:nb])
     if m > nb:
         th[nb:], w[nb:], _ = _newton_interior(n, a, b, th0[nb:], _interior_weight_constant(n, a, b))
     return th, w
