@@ -57,7 +57,6 @@ from dataclasses import dataclass, field
 from typing import Callable, Optional
 
 import numpy as np
-import mpmath
 from mpmath import mp
 
 DPS = 40          # working precision of all mpmath computations here
@@ -239,15 +238,20 @@ def hilbert_mp(alpha, beta, phi_mp, s):
     hl0 = 2 ** alpha * phi_mp(mp.mpf(-1)) / (-1 - s)
     hr0 = 2 ** beta * phi_mp(mp.mpf(1)) / (1 - s)
 
-    def gl(u):          # t = -1 + u,  u in (0, 1 + s)
-        t = -1 + u
-        return ((2 - u) ** alpha * u ** beta * phi_mp(t) - psi_s) / (t - s) - hl0 * u ** beta
-
-    def gr(v):          # t = 1 - v,   v in (0, 1 - s)
-        t = 1 - v
-        return (v ** alpha * (2 - v) ** beta * phi_mp(t) - psi_s) / (t - s) - hr0 * v ** alpha
-
     cl, cr = 1 + s, 1 - s
+
+    def gl(u):          # t = -1 + u,  u in (0, 1 + s);  t - s = u - cl
+        d = u - cl
+        if d == 0:      # a tanh-sinh node rounded onto t = s: zero weight anyway
+            return mp.zero
+        return ((2 - u) ** alpha * u ** beta * phi_mp(-1 + u) - psi_s) / d - hl0 * u ** beta
+
+    def gr(v):          # t = 1 - v,   v in (0, 1 - s);  t - s = cr - v
+        d = cr - v
+        if d == 0:
+            return mp.zero
+        return (v ** alpha * (2 - v) ** beta * phi_mp(1 - v) - psi_s) / d - hr0 * v ** alpha
+
     total = (mp.quad(gl, [0, cl / 2, cl]) + hl0 * cl ** (beta + 1) / (beta + 1)
              + mp.quad(gr, [0, cr / 2, cr]) + hr0 * cr ** (alpha + 1) / (alpha + 1)
              + psi_s * mp.log(cr / cl))

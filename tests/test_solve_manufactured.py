@@ -25,7 +25,6 @@ Measured errors are printed as lines starting with ``[sie-mms]``; run with
 from __future__ import annotations
 
 import functools
-import math
 import re
 
 import numpy as np
@@ -554,6 +553,8 @@ BAD = [
     ("n=0 (kappa=0)", 0, dict(n=0), _f_ok, "n"),
     ("n=0 (kappa=-1)", -1, dict(n=0), _f_ok, "n"),
     ("n=-1 (kappa=+1)", 1, dict(n=-1), _f_ok, "n"),
+    # kappa = +1 with n = 1: no collocation equation is left after the side condition
+    ("n=1 too small for kappa=+1", 1, dict(n=1), _f_ok, "n"),
     ("n=-1 (kappa=-1)", -1, dict(n=-1), _f_ok, "n"),
     ("b=0", 0, dict(b=0.0), _f_ok, "b"),
     ("a=nan", 0, dict(a=nan), _f_ok, "a"),
