@@ -29,7 +29,7 @@ import numpy as np
 
 from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_series
-from .special import jacobi_moment
+from .special import jacobi_moment_shifted
 
 __all__ = ["InversionRemainder"]
 
@@ -67,7 +67,8 @@ class InversionRemainder:
         self.w_rule = _composite_rule(q, alpha, beta, breaks)
         if sol.kappa == 1:
             tw, ww = self.w_rule
-            self.const = -float(ww @ self._phi_no_const(tw)) / jacobi_moment(alpha, beta)
+            self.const = -float(ww @ self._phi_no_const(tw)) / jacobi_moment_shifted(
+                sol._exp.alpha_p1, sol._exp.beta_p1)
         return self
 
     # g - Pi g at points x, given f(x)

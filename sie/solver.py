@@ -38,7 +38,7 @@ from .errors import (CallableOutputError, EvaluationPointError, InvalidBreakpoin
                      check_finite_real, check_order)
 from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
-from .special import jacobi_moment
+from .special import jacobi_end_values, jacobi_moment_shifted
 
 __all__ = ["solve", "Solution", "sie_exponents", "Exponents"]
 
@@ -54,9 +54,13 @@ _KERNEL_EXTRA = 16          # t-nodes beyond n for int k(s,t) psi(t) dt
 class Exponents:
     """Endpoint exponents of psi = (1-s)^alpha (1+s)^beta phi.
 
-    alpha0 in (0,1) solves cot(pi alpha0) = -a/b; ``alpha0c`` = 1 - alpha0 is
-    stored separately so that exponents within 1e-8 of 0 or 1 keep full
-    relative precision.  ``cot`` = cot(pi alpha) = -a/b, ``sin`` = sin(pi alpha).
+    alpha0 in (0,1) solves cot(pi alpha0) = -a/b.  ``cot`` = cot(pi alpha) = -a/b,
+    ``sin`` = sin(pi alpha).  The shifted exponents 1 + alpha, 1 + beta (those of
+    the solution weight at its ends) and 1 - alpha, 1 - beta (those of the
+    projection weight (1-s)^{-alpha}(1+s)^{-beta}) are carried separately, each
+    computed without cancellation from alpha0 or 1 - alpha0: when an exponent is
+    within 1e-8 of -1, recomputing e + 1 from a rounded e would lose 8 digits,
+    and moments ~ 1/(e+1) with it.
     """
     alpha: float
     beta: float
@@ -64,6 +68,10 @@ class Exponents:
     alpha0: float
     cot: float
     sin: float
+    alpha_p1: float   # 1 + alpha
+    beta_p1: float    # 1 + beta
+    alpha_m1: float   # 1 - alpha
+    beta_m1: float    # 1 - beta
 
 
 def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
@@ -77,11 +85,17 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
     alpha0 = math.atan2(1.0, y) / math.pi        # principal arccot, in (0, 1)
     alpha0c = math.atan2(1.0, -y) / math.pi      # 1 - alpha0, without cancellation
     sin0 = 1.0 / math.hypot(1.0, y)              # sin(pi alpha0) > 0
-    alpha = alpha0 if right == "bounded" else -alpha0c
-    beta = alpha0c if left == "bounded" else -alpha0
+    if right == "bounded":
+        alpha, alpha_p1, alpha_m1 = alpha0, 1.0 + alpha0, alpha0c
+    else:
+        alpha, alpha_p1, alpha_m1 = -alpha0c, alpha0, 1.0 + alpha0c
+    if left == "bounded":
+        beta, beta_p1, beta_m1 = alpha0c, 1.0 + alpha0c, alpha0
+    else:
+        beta, beta_p1, beta_m1 = -alpha0, alpha0c, 1.0 + alpha0
     kappa = {("singular", "singular"): 1, ("bounded", "bounded"): -1}.get((left, right), 0)
     sin_pa = sin0 if right == "bounded" else -sin0  # sin(pi(alpha0 - 1)) = -sin(pi alpha0)
-    return Exponents(alpha, beta, kappa, alpha0, y, sin_pa)
+    return Exponents(alpha, beta, kappa, alpha0, y, sin_pa, alpha_p1, beta_p1, alpha_m1, beta_m1)
 
 
 # --------------------------------------------------------------------------
@@ -115,6 +129,65 @@ def _check_breaks(breaks):
         raise InvalidBreakpointError(
             f"breaks must be finite points strictly inside (-1, 1), got {br.tolist()}")
     return np.unique(br)
+
+
+# --------------------------------------------------------------------------
+# Gauss-Jacobi sums with the mass of a nearly non-integrable end taken out
+# --------------------------------------------------------------------------
+_NEAR_MINUS_ONE = 0.01   # e + 1 below this: the weight's end mass ~ 1/(e+1) is split off
+
+
+@dataclass(frozen=True)
+class _WeightedRule:
+    """int (1-x)^a (1+x)^b g(x) dx  ~  sum_j omega_j g(x_j) + g(end) * corr.
+
+    Plain Gauss-Jacobi (``end`` = 0, corr = 0) unless an exponent e has
+    e + 1 < 0.01.  Then the weight carries a mass ~ 1/(e+1) next to that end and a
+    Gauss sum loses eps * mass absolute, which the integrals we need cannot
+    afford: they are O(1) because the integrand nearly vanishes there
+    (P_k^{(a,b)}(+1) ~ (a+1)/k).  We split g(x) = g(end) + (end - x) r(x):
+
+        int W g = g(end) mu_0 + int W |end - x| r,
+
+    the first term with the exact moment and end value (from the exact e + 1),
+    the second by the Gauss rule of the regular weight with e + 1 in place of e,
+    rewritten as sum_j omega_j (g(x_j) - g(end)), omega_j = w'_j/|end - x_j|.
+    """
+    x: np.ndarray
+    omega: np.ndarray
+    end: int
+    corr: float
+    a: float
+    b: float
+    a_p1: float
+    b_p1: float
+
+    @classmethod
+    def build(cls, q, a, b, a_p1, b_p1):
+        if min(a_p1, b_p1) >= _NEAR_MINUS_ONE:
+            x, w = gauss_jacobi(q, a, b)
+            return cls(x, w, 0, 0.0, a, b, a_p1, b_p1)
+        mu0 = jacobi_moment_shifted(a_p1, b_p1)
+        if a_p1 < b_p1:                       # the mass sits at x = +1
+            x, w = gauss_jacobi(q, a_p1, b)
+            omega = w / (1.0 - x)
+            end = 1
+        else:
+            x, w = gauss_jacobi(q, a, b_p1)
+            omega = w / (1.0 + x)
+            end = -1
+        return cls(x, omega, end, float(mu0 - omega.sum()), a, b, a_p1, b_p1)
+
+    def end_values(self, n):
+        """P_k^{(a,b)}(end), k < n, to full relative precision."""
+        return jacobi_end_values(n, self.a_p1 if self.end > 0 else self.b_p1, self.end)
+
+    def project(self, g, g_end, n):
+        """sum_j omega_j g_j P_k(x_j) + g_end P_k(end) corr, k < n: <g, P_k>_W."""
+        out = jacobi_project(self.omega * g, self.a, self.b, self.x, n)
+        if self.end:
+            out = out + (g_end * self.corr) * self.end_values(n)
+        return out
 
 
 # --------------------------------------------------------------------------
@@ -226,7 +299,7 @@ class Solution:
     # -- functionals -----------------------------------------------------
     def integral(self):
         """int_{-1}^{1} psi = mu_0 c_0 (orthogonality of P_k, k >= 1, to 1)."""
-        total = jacobi_moment(self.alpha, self.beta) * self.coefficients[0]
+        total = jacobi_moment_shifted(self._exp.alpha_p1, self._exp.beta_p1) * self.coefficients[0]
         if self._remainder is not None:
             total += self._remainder.integral()
         return float(total)
@@ -314,20 +387,25 @@ class Solution:
         return out
 
 
-def _chop_noise(c, alpha, beta, factor=256.0, run=8):
+def _chop_noise(c, e, factor=256.0, run=8):
     """Zero the rounding-noise tail of a Jacobi series (plateau chopping).
 
-    Coefficients are compared in the orthonormal scale |c_k| sqrt(h_k).  Once
-    ``run`` consecutive ones lie below factor * eps * max, the series has
-    resolved phi to rounding; what follows is noise from the projection (it
-    grows with k, ~1e-12 at k = 4600, and P_k(1) ~ k^alpha amplifies it at the
-    ends: unchopped, phi(+1) moved by 3e-5 at n = 5000).  Slowly decaying series
-    (kinked f) never reach the threshold and are left alone.  Cf. Aurentz &
-    Trefethen, "Chopping a Chebyshev series", ACM TOMS 43 (2017).
+    Coefficients are compared in an orthonormal scale |c_k| sqrt(h_k), with h_k
+    the norms of the weight whose exponents are max(alpha, -1/2), max(beta, -1/2):
+    the true h_0 ~ 1/(alpha+1) is 3e8 at alpha = -1 + 3e-9, which made c_0 look
+    huge and chopped real digits at 1e-9.  Once ``run`` consecutive sizes lie
+    below factor * eps * max, the series has resolved phi to rounding; what
+    follows is noise from the projection (it grows with k, ~1e-12 at k = 4600,
+    and P_k(1) ~ k^alpha amplifies it at the ends: unchopped, phi(+1) moved by
+    3e-5 at n = 5000).  Slowly decaying series (kinked f) never reach the
+    threshold and are left alone.  Cf. Aurentz & Trefethen, "Chopping a
+    Chebyshev series", ACM TOMS 43 (2017).
     """
-    size = np.abs(c) * np.sqrt(jacobi_norms(c.size, alpha, beta))
-    top = size.max() if size.size else 0.0
-    if top == 0.0 or c.size <= run:
+    if c.size <= run:
+        return c
+    size = np.abs(c) * np.sqrt(jacobi_norms(c.size, max(e.alpha, -0.5), max(e.beta, -0.5)))
+    top = size.max()
+    if top == 0.0:
         return c
     small = size <= factor * np.finfo(float).eps * top
     # first k with small[k:k+run] all True
@@ -338,6 +416,34 @@ def _chop_noise(c, alpha, beta, factor=256.0, run=8):
     c = c.copy()
     c[hits[0]:] = 0.0
     return c
+
+
+def _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h):
+    """khat[m, k] = <int k(., t) w(t) P_k^{(alpha,beta)}(t) dt, P_m^{(-alpha,-beta)}> / h_m.
+
+    Inner integral over t by the (end-corrected) Gauss rule of w; outer
+    projection by the same rule as f (``rule``; None means the composite rule
+    ``s, ws`` used with breaks).  Corrected ends need the kernel on the end
+    lines s = +-1 or t = +-1, so it is evaluated on the grid augmented by them.
+    """
+    alpha, beta = e.alpha, e.beta
+    trule = _WeightedRule.build(n + _KERNEL_EXTRA, alpha, beta, e.alpha_p1, e.beta_p1)
+    s_end = rule.end if rule is not None else 0
+    s_aug = np.concatenate([s, [float(s_end)]]) if s_end else s
+    t_aug = np.concatenate([trule.x, [float(trule.end)]]) if trule.end else trule.x
+    S, T = np.meshgrid(s_aug, t_aug, indexing="ij")
+    kst = _call_checked(kernel, "kernel", (S, T), S.shape)
+    nt = trule.x.size
+    Pt = jacobi_vandermonde(n, alpha, beta, trule.x)               # (nt, n)
+    G = (kst[:, :nt] * trule.omega) @ Pt                          # (q[+1], n)
+    if trule.end:
+        G += np.outer(kst[:, nt], trule.corr * trule.end_values(n))
+    q = s.size
+    Ps = jacobi_vandermonde(m_eq, -alpha, -beta, s)               # (q, m_eq)
+    khat = (Ps.T * ws) @ G[:q]
+    if s_end:
+        khat += np.outer(rule.corr * rule.end_values(m_eq), G[q])
+    return khat / h[:, None]
 
 
 # --------------------------------------------------------------------------
@@ -400,20 +506,28 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
 
     alpha, beta = e.alpha, e.beta
     lam = -(2.0 ** (-kappa)) * b / e.sin
+    mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)          # int w, exact
     m_eq = n - kappa                           # projected equations, m = 0..m_eq-1
-    if br.size == 0:
-        s, ws = gauss_jacobi(m_eq, -alpha, -beta)
-    else:
-        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
     h = jacobi_norms(m_eq, -alpha, -beta)
+    h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
+    if br.size == 0:
+        rule = _WeightedRule.build(m_eq, -alpha, -beta, e.alpha_m1, e.beta_m1)
+        s, ws = rule.x, rule.omega
+    else:
+        rule = None
+        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
     fs = _call_checked(f, "f", (s,), s.shape)
-    fhat = jacobi_project(ws * fs, -alpha, -beta, s, m_eq) / h
+    if rule is not None and rule.end:
+        f_end = float(_call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
+        fhat = rule.project(fs, f_end, m_eq) / h
+    else:
+        fhat = jacobi_project(ws * fs, -alpha, -beta, s, m_eq) / h
 
     matrix = None
     if kernel is None:
         c = np.empty(n)
         if kappa == 1:
-            c[0] = total / jacobi_moment(alpha, beta)
+            c[0] = total / mu0
             c[1:] = fhat / lam
         elif kappa == 0:
             c[:] = fhat / lam
@@ -421,12 +535,7 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
             c[:] = fhat[1:] / lam
         kc = None
     else:
-        t, wt = gauss_jacobi(n + _KERNEL_EXTRA, alpha, beta)
-        S, T = np.meshgrid(s, t, indexing="ij")
-        kst = _call_checked(kernel, "kernel", (S, T), S.shape)
-        Pt = jacobi_vandermonde(n, alpha, beta, t)              # (nt, n)
-        Ps = jacobi_vandermonde(m_eq, -alpha, -beta, s)         # (q, m_eq)
-        khat = (Ps.T * ws) @ (kst * wt) @ Pt / h[:, None]       # (m_eq, n)
+        khat = _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h)
         A = khat.copy()
         for m in range(m_eq):
             k = m + kappa
@@ -437,14 +546,13 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
             side = np.zeros(n)
             side[0] = abs(lam)                           # row scaled like the others
             A = np.vstack([side, A])
-            rhs = np.concatenate([[abs(lam) * total / jacobi_moment(alpha, beta)], rhs])
+            rhs = np.concatenate([[abs(lam) * total / mu0], rhs])
         elif kappa == -1:
-            A_sq, rhs_sq = A[1:], rhs[1:]
-            A, rhs = A_sq, rhs_sq
+            A, rhs = A[1:], rhs[1:]
         c = np.linalg.solve(A, rhs)
         matrix = A
         kc = khat @ c
-    c = _chop_noise(c, alpha, beta)
+    c = _chop_noise(c, e)
     consistency = None
     if kappa == -1:
         consistency = float(fhat[0] - (kc[0] if kc is not None else 0.0))

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 __all__ = ["log_gamma_ratio", "gamma_ratio", "jacobi_moment", "jacobi_norm",
-           "gauss_jacobi_constant"]
+           "gauss_jacobi_constant", "jacobi_moment_shifted", "jacobi_end_values"]
 
 # B_{2k} / (2k (2k-1)), k = 1..8 (Stirling series of ln Gamma; DLMF 5.11.1)
 _STIRLING = (1.0 / 12.0, -1.0 / 360.0, 1.0 / 1260.0, -1.0 / 1680.0, 1.0 / 1188.0,
@@ -79,3 +81,29 @@ def gauss_jacobi_constant(n: int, alpha: float, beta: float) -> float:
     """
     return 2.0 ** (alpha + beta + 1.0) * math.exp(
         log_gamma_ratio(n + 1.0, alpha) + log_gamma_ratio(n + alpha + beta + 1.0, -alpha))
+
+
+def jacobi_moment_shifted(alpha_p1: float, beta_p1: float) -> float:
+    """mu_0 = int (1-x)^alpha (1+x)^beta dx from the shifted exponents alpha+1, beta+1.
+
+    Same as :func:`jacobi_moment`, but takes alpha+1 and beta+1 as given: when an
+    exponent is within ~1e-8 of -1, alpha+1 recomputed from a rounded alpha has a
+    relative error eps/(alpha+1) (3.5e-8 at alpha = -1 + 3e-9), and mu_0 ~ 1/(alpha+1)
+    inherits it.  The SIE exponents carry alpha+1 exactly (:class:`sie.Exponents`).
+    """
+    s = alpha_p1 + beta_p1
+    return 2.0 ** (s - 1.0) * math.gamma(alpha_p1) * math.exp(-log_gamma_ratio(beta_p1, alpha_p1))
+
+
+def jacobi_end_values(n: int, e_p1: float, end: int):
+    """P_k^{(a,b)}(end), k = 0..n-1, from the exact shifted exponent of that end.
+
+    P_k(+1) = binom(k+a, k) = prod_{j=1}^{k} (j - 1 + (a+1))/j  (DLMF 18.6.1), with
+    ``e_p1`` = a + 1; P_k(-1) = (-1)^k binom(k+b, k) with ``e_p1`` = b + 1.
+    Relative accuracy stays ~k eps however small e_p1 is (P_k(+1) ~ (a+1)/k then).
+    """
+    j = np.arange(1, n, dtype=float)
+    vals = np.concatenate([[1.0], np.cumprod((j - 1.0 + e_p1) / j)])
+    if end < 0:
+        vals[1::2] *= -1.0
+    return vals
