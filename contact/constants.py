@@ -1,0 +1,264 @@
+"""Surface constants N11, N12, N21, N22 of a moving orthotropic half-space, and its Rayleigh speed.
+
+Conventions (project notes, paper-errata.md): half-space Y < 0, surface tractions
+sigma_YY(X, 0) = -p(X), tau_XY(X, 0) = -q(X), Hc[f](X) = (1/pi) PV int f(t) / (t - X) dt.
+The surface response to (p, q) is (Zhou, Lee & Jang 2014, eqs. (4.5)-(4.6), with L2 -> N22 as
+in errata item 1)::
+
+    dv/dX (X, 0)   = N12 q(X) + N11 Hc[p](X),
+    sigma_XX(X, 0) = N21 p(X) + N22 Hc[q](X).
+
+Derivation (independent of the paper's eq. (4.4) and Appendix)
+---------------------------------------------------------------
+Take u, v ~ exp(i k X + |k| eta Y).  The equations of motion give eq. (3.1), the quadratic
+a eta^4 + b eta^2 + d = 0 of :meth:`contact.material.Orthotropic.characteristic_coefficients`.
+Decay as Y -> -inf keeps the two roots eta1, eta2 with Re eta > 0; with the eigenvectors
+v_n = i sgn(k) h(eta_n) u_n, h(eta) = (C33 eta^2 - C11') / ((C12 + C33) eta), and
+C11' = C11 - C33 c^2, the two traction conditions at Y = 0 fix the amplitudes.  Hc has the
+Fourier multiplier +i sgn(k), so dv/dX and sigma_XX can be read off.  Every 2x2 determinant
+carries a factor (eta1 - eta2), which cancels; the factor (C12 + C33) of the eigenvectors
+cancels as well.  What is left depends on the roots only through
+
+    P = eta1 eta2 = sqrt(d / a) = sqrt((1 - c^2) C11' / C22),
+    S = eta1 + eta2 = sqrt(eta1^2 + eta2^2 + 2 P) = sqrt(2 P - b / a),
+
+which are real and positive for real, complex-conjugate and repeated roots alike
+(0 <= c < c_R).  With the Rayleigh function
+
+    Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11'
+
+the constants are
+
+    N11 = -S C11' / Delta,
+    N12 = (C11' - C12 P) / Delta,
+    N21 = -[C11' (C11 C22 - C12^2 - C12 C33 c^2) - C12 C22 C33 c^2 P] / (C22 Delta),
+    N22 = -P S (C11 C22 - C12^2) / Delta.
+
+Static isotropic check (P = 1, S = 2): N11 = -(1 - nu)/G, N12 = (1 - 2 nu)/(2G), N21 = -1,
+N22 = -2.  Evaluated at zeta > 0, the paper's eq. (4.4) with the Appendix (Case B) gives the
+same numbers, but it divides by (eta1 - eta2) and by (C12 + C33): it is singular at isotropy
+and loses digits near it.
+"""
+from __future__ import annotations
+
+import functools
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .errors import NearRayleighWarning, SpeedError
+from .material import Orthotropic, check_speed
+
+__all__ = [
+    "SurfaceConstants",
+    "surface_constants",
+    "root_symmetric_functions",
+    "rayleigh_function",
+    "limiting_speed",
+    "rayleigh_speed",
+    "NEAR_RAYLEIGH_FRACTION",
+]
+
+#: A speed above this fraction of c_R triggers :class:`~contact.errors.NearRayleighWarning`.
+NEAR_RAYLEIGH_FRACTION = 0.99
+
+
+@dataclass(frozen=True)
+class SurfaceConstants:
+    """Surface constants of eqs. (4.5)-(4.6) of Zhou et al. 2014 at one relative speed.
+
+    Attributes
+    ----------
+    N11, N12 : float
+        dv/dX (X, 0) = N12 q + N11 Hc[p]  (unit: 1 / stress unit of the material).
+    N21, N22 : float
+        sigma_XX(X, 0) = N21 p + N22 Hc[q]  (dimensionless).
+    c : float
+        Relative speed V / sqrt(C33 / rho).
+    eta_product, eta_sum : float
+        P = eta1 eta2 and S = eta1 + eta2 of the two decaying characteristic roots.
+    rayleigh_denominator : float
+        Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11' (> 0 below c_R).
+    rayleigh_speed : float
+        c_R of the material.
+    """
+
+    N11: float
+    N12: float
+    N21: float
+    N22: float
+    c: float
+    eta_product: float
+    eta_sum: float
+    rayleigh_denominator: float
+    rayleigh_speed: float
+
+
+def root_symmetric_functions(material: Orthotropic, c) -> tuple[float, float]:
+    """P = eta1 eta2 and S = eta1 + eta2 of the decaying roots of eq. (3.1), Zhou et al. 2014.
+
+    Computed from the coefficients of a eta^4 + b eta^2 + d = 0 only: P = sqrt(d/a),
+    S = sqrt(2P - b/a).  Valid for 0 <= c below the limiting speed (see
+    :func:`limiting_speed`), where d >= 0 and 2P - b/a >= 0; outside, NaN may result.
+    """
+    a, b, d = material.characteristic_coefficients(c)
+    P = math.sqrt(d / a) if d > 0.0 else 0.0
+    S2 = 2.0 * P - b / a
+    S = math.sqrt(S2) if S2 >= 0.0 else math.nan
+    return P, S
+
+
+def rayleigh_function(material: Orthotropic, c) -> float:
+    """The common denominator Delta(c) of the surface constants (a Rayleigh function).
+
+    Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11', C11' = C11 - C33 c^2, P = eta1 eta2.
+    Delta(0) = P (C11 C22 - C12^2) > 0; its first zero is the Rayleigh speed c_R.
+    """
+    P, _ = root_symmetric_functions(material, c)
+    c2 = float(c) ** 2
+    C11p = material.C11 - material.C33 * c2
+    return P * (material.C22 * C11p - material.C12 ** 2) - material.C33 * c2 * C11p
+
+
+def _scaled_rayleigh_function(material: Orthotropic, c: float) -> float:
+    """Delta(c) / sqrt(C11'): same sign as Delta below the limiting speed, without the trivial
+    zero of Delta at C11' = 0 (c^2 = C11/C33 < 1)."""
+    c2 = c * c
+    C11p = max(material.C11 - material.C33 * c2, 0.0)
+    return (math.sqrt(max(1.0 - c2, 0.0) / material.C22) * (material.C22 * C11p - material.C12 ** 2)
+            - material.C33 * c2 * math.sqrt(C11p))
+
+
+def _eta_sum_squared(material: Orthotropic, c: float) -> float:
+    a, b, d = material.characteristic_coefficients(c)
+    return 2.0 * math.sqrt(max(d, 0.0) / a) - b / a
+
+
+@functools.lru_cache(maxsize=256)
+def limiting_speed(material: Orthotropic) -> float:
+    """Lowest relative speed at which a decaying root reaches the imaginary axis.
+
+    The smallest of 1 (shear wave, d = 0), sqrt(C11/C33) (longitudinal wave, d = 0) and the
+    speed where eta1 + eta2 = 0 (a complex pair eta^2 becomes a negative double root).
+    S^2 = 2P - b/a is positive at c = 0 for every positive definite stiffness and strictly
+    decreasing in c, so that speed is found by bracketing (scipy.optimize.brentq).
+    """
+    c_max = min(1.0, math.sqrt(material.C11 / material.C33))
+    if _eta_sum_squared(material, c_max) >= 0.0:
+        return c_max
+    return _decreasing_root(functools.partial(_eta_sum_squared, material), 0.0, c_max)
+
+
+@functools.lru_cache(maxsize=256)
+def rayleigh_speed(material: Orthotropic) -> float:
+    """Relative Rayleigh speed c_R: the first zero of :func:`rayleigh_function`.
+
+    Delta > 0 at c = 0 and Delta <= 0 at the limiting speed c_L <= 1 (a subsonic surface wave
+    exists for an orthotropic half-space; also checked on 20000 random stiffnesses, each with
+    a single sign change of Delta on (0, c_L)), so c_R is bracketed in (0, c_L] and found
+    with scipy.optimize.brentq on Delta / sqrt(C11'), polished by bisection to about one ulp.
+    Zhou et al. 2014 material: c_R = 0.9936147...; isotropic nu = 0.25: 0.9194017...
+    (errata item 5: the admissible range is 0 <= c < c_R, not [0, 1)).
+    """
+    c_lim = limiting_speed(material)
+    f = functools.partial(_scaled_rayleigh_function, material)
+    if f(c_lim) >= 0.0:  # exceptional limiting wave that is itself traction free
+        return c_lim
+    return _decreasing_root(f, 0.0, c_lim)
+
+
+def _decreasing_root(f, lo: float, hi: float) -> float:
+    """Root of f with f(lo) > 0 >= f(hi), to about one ulp.
+
+    scipy.optimize.brentq gets within a few ulp; bisection then narrows the bracket to two
+    adjacent doubles (f > 0 at the left one, f <= 0 at the right one) and returns the one with
+    the smaller |f|.  The rounding noise of f itself limits this to about one ulp.
+    """
+    x = brentq(f, lo, hi, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=200)
+    a = b = x
+    step = np.spacing(x)
+    while not f(a) > 0.0:                        # widen to a bracket f(a) > 0 >= f(b)
+        a, step = max(lo, a - step), 2 * step
+    step = np.spacing(x)
+    while f(b) > 0.0:
+        b, step = min(hi, b + step), 2 * step
+    while True:                                  # bisect down to adjacent doubles
+        mid = 0.5 * (a + b)
+        if not a < mid < b:
+            break
+        if f(mid) > 0.0:
+            a = mid
+        else:
+            b = mid
+    return float(a if abs(f(a)) < abs(f(b)) else b)
+
+
+def _check_subrayleigh(material: Orthotropic, c) -> tuple[float, float]:
+    c = check_speed(c)
+    c_R = rayleigh_speed(material)
+    if not c < c_R:
+        raise SpeedError(
+            f"relative speed c must be below the Rayleigh speed c_R = {c_R!r} of this material "
+            f"(allowed: 0 <= c < c_R), got c = {c!r}")
+    if c > NEAR_RAYLEIGH_FRACTION * c_R:
+        warnings.warn(
+            f"relative speed c = {c!r} is within 1% of the Rayleigh speed c_R = {c_R!r}: "
+            f"the surface constants are valid but extremely sensitive to c",
+            NearRayleighWarning, stacklevel=3)
+    return c, c_R
+
+
+def surface_constants(material: Orthotropic, c) -> SurfaceConstants:
+    """Surface constants N11, N12, N21, N22 of Zhou et al. 2014, eqs. (4.4)-(4.6).
+
+    Parameters
+    ----------
+    material : Orthotropic
+    c : float
+        Relative speed V / sqrt(C33 / rho), 0 <= c < c_R.
+
+    Returns
+    -------
+    SurfaceConstants
+        With C11' = C11 - C33 c^2, P = eta1 eta2 = sqrt((1 - c^2) C11' / C22),
+        S = eta1 + eta2 = sqrt(2P - b/a) (see :func:`root_symmetric_functions`) and
+        Delta = P (C22 C11' - C12^2) - C33 c^2 C11'::
+
+            N11 = -S C11' / Delta
+            N12 = (C11' - C12 P) / Delta
+            N21 = -[C11' (C11 C22 - C12^2 - C12 C33 c^2) - C12 C22 C33 c^2 P] / (C22 Delta)
+            N22 = -P S (C11 C22 - C12^2) / Delta
+
+        for dv/dX = N12 q + N11 Hc[p] and sigma_XX = N21 p + N22 Hc[q].
+
+    Raises
+    ------
+    SpeedError
+        If c is not finite, negative, or not below the Rayleigh speed c_R.
+
+    Warns
+    -----
+    NearRayleighWarning
+        If c > 0.99 c_R.
+    """
+    c, c_R = _check_subrayleigh(material, c)
+    C11, C12, C22, C33 = material.C11, material.C12, material.C22, material.C33
+    c2 = c * c
+    C11p = C11 - C33 * c2
+    P, S = root_symmetric_functions(material, c)
+    det = C11 * C22 - C12 ** 2
+    delta = P * (C22 * C11p - C12 ** 2) - C33 * c2 * C11p
+    return SurfaceConstants(
+        N11=-S * C11p / delta,
+        N12=(C11p - C12 * P) / delta,
+        N21=-(C11p * (det - C12 * C33 * c2) - C12 * C22 * C33 * c2 * P) / (C22 * delta),
+        N22=-P * S * det / delta,
+        c=c,
+        eta_product=P,
+        eta_sum=S,
+        rayleigh_denominator=delta,
+        rayleigh_speed=c_R,
+    )

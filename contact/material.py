@@ -1,0 +1,199 @@
+"""Orthotropic plane-strain materials and the characteristic roots of Zhou et al. (2014).
+
+Stress-strain law (Zhou, Lee & Jang 2014, eq. (2.2), plane strain, C13 = C23 = 0)::
+
+    sigma_xx = C11 u_x + C12 v_y,   sigma_yy = C12 u_x + C22 v_y,   tau_xy = C33 (u_y + v_x).
+
+Steady motion at speed V in the frame X = x -/+ V t (eq. (2.5)) turns rho u_tt into
+rho V^2 u_XX = C33 c^2 u_XX, with the relative speed c = V / sqrt(C33 / rho) (Sec. 6.1; the
+paper prints sqrt(C33 rho), see errata item 6).  Displacements exp(i k X + |k| eta Y) solve the
+equations of motion when eta is a root of the characteristic equation (eq. (3.1)), a quadratic
+in eta^2::
+
+    a eta^4 + b eta^2 + d = 0,
+    a = C22 C33,
+    b = (C12 + C33)^2 - C22 (C11 - C33 c^2) - C33^2 (1 - c^2),
+    d = C33 (1 - c^2) (C11 - C33 c^2).
+
+Any consistent stress unit may be used (the paper's material is in GPa).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import MaterialError, SpeedError, check_finite
+
+__all__ = ["Orthotropic", "Isotropic", "zhou2014", "check_speed"]
+
+
+def check_speed(c) -> float:
+    """Return the relative speed ``c`` as a float; raise SpeedError unless it is finite and >= 0."""
+    c = check_finite("relative speed c", c, SpeedError)
+    if c < 0.0:
+        raise SpeedError(f"relative speed c must be >= 0 (c = V / sqrt(C33/rho)), got {c!r}")
+    return c
+
+
+def _check_positive(name: str, value) -> float:
+    v = check_finite(name, value, MaterialError)
+    if not v > 0.0:
+        raise MaterialError(f"{name} must be > 0, got {v!r}")
+    return v
+
+
+@dataclass(frozen=True)
+class Orthotropic:
+    """Orthotropic material in plane strain (Zhou et al. 2014, eq. (2.2)).
+
+    Parameters
+    ----------
+    C11, C12, C22, C33 : float
+        Plane-strain stiffnesses, any consistent stress unit.  Admissible when all are finite,
+        C11 > 0, C22 > 0, C33 > 0 and C11*C22 > C12**2 (positive definite strain energy).
+    rho : float or None, optional
+        Mass density (> 0), needed only to convert a speed V to the relative speed
+        c = V / sqrt(C33 / rho).
+
+    Raises
+    ------
+    MaterialError
+        If a stiffness is not finite, not positive where required, the stiffness is not
+        positive definite, or rho is given and is not a finite positive number.
+    """
+
+    C11: float
+    C12: float
+    C22: float
+    C33: float
+    rho: float | None = None
+
+    def __post_init__(self):
+        for name in ("C11", "C22", "C33"):
+            object.__setattr__(self, name, _check_positive(name, getattr(self, name)))
+        object.__setattr__(self, "C12", check_finite("C12", self.C12, MaterialError))
+        if not self.C11 * self.C22 > self.C12 ** 2:
+            raise MaterialError(
+                f"stiffness must be positive definite: need C11*C22 > C12**2, got "
+                f"C11*C22 = {self.C11 * self.C22!r} and C12**2 = {self.C12 ** 2!r} "
+                f"(C12 = {self.C12!r}); allowed: |C12| < sqrt(C11*C22) = "
+                f"{math.sqrt(self.C11 * self.C22)!r}")
+        if self.rho is not None:
+            object.__setattr__(self, "rho", _check_positive("rho", self.rho))
+
+    @property
+    def shear_wave_speed(self) -> float:
+        """Bulk shear wave speed sqrt(C33/rho) (Sec. 6.1, errata item 6); needs ``rho``."""
+        if self.rho is None:
+            raise MaterialError("rho is None: give the density to convert speeds")
+        return math.sqrt(self.C33 / self.rho)
+
+    def relative_speed(self, V) -> float:
+        """Relative speed c = |V| / sqrt(C33/rho) of a punch moving at speed ``V``."""
+        V = check_finite("speed V", V, SpeedError)
+        return abs(V) / self.shear_wave_speed
+
+    def characteristic_coefficients(self, c) -> tuple[float, float, float]:
+        """Coefficients (a, b, d) of a eta^4 + b eta^2 + d = 0, Zhou et al. 2014, eq. (3.1).
+
+        Parameters
+        ----------
+        c : float
+            Relative speed, finite and >= 0.
+
+        Returns
+        -------
+        a, b, d : float
+            a = C22 C33, b = (C12 + C33)^2 - C22 (C11 - C33 c^2) - C33^2 (1 - c^2),
+            d = C33 (1 - c^2) (C11 - C33 c^2).
+        """
+        c2 = check_speed(c) ** 2
+        C11, C12, C22, C33 = self.C11, self.C12, self.C22, self.C33
+        a = C22 * C33
+        b = (C12 + C33) ** 2 - C22 * (C11 - C33 * c2) - C33 ** 2 * (1.0 - c2)
+        d = C33 * (1.0 - c2) * (C11 - C33 * c2)
+        return a, b, d
+
+    def characteristic_roots(self, c) -> np.ndarray:
+        """The four roots of the characteristic equation, Zhou et al. 2014, eq. (3.1).
+
+        Parameters
+        ----------
+        c : float
+            Relative speed, finite and >= 0 (any value: real, complex-conjugate, purely
+            imaginary and repeated roots are all returned).
+
+        Returns
+        -------
+        numpy.ndarray of complex, shape (4,)
+            (eta1, -eta1, eta3, -eta3) as in Table 1: |eta1| >= |eta3|; eta1 and eta3 are the
+            principal square roots of the two roots eta^2 of a eta^4 + b eta^2 + d = 0
+            (real part > 0, or on the positive imaginary axis when eta^2 < 0).  For a
+            complex-conjugate pair eta^2 = r exp(+-i phi), eta1 has Im > 0 and eta3 = conj(eta1).
+
+        Notes
+        -----
+        The pair eta^2 comes from the cancellation-free quadratic formula
+        q = -(b + sign(b) sqrt(b^2 - 4ad)) / 2, eta^2 = q/a (larger modulus) and d/q.  Near a
+        double root (isotropy at c = 0) the roots are intrinsically ill-conditioned (a
+        perturbation delta of the coefficients moves them by ~sqrt(delta)); the surface
+        constants in :mod:`contact.constants` use only a, b, d and are not affected.
+        """
+        a, b, d = self.characteristic_coefficients(c)
+        big, small = _quadratic_roots(a, b, d)
+        eta1 = np.sqrt(complex(big))
+        eta3 = np.sqrt(complex(small))
+        return np.array([eta1, -eta1, eta3, -eta3], dtype=complex)
+
+
+def _quadratic_roots(a: float, b: float, d: float) -> tuple[complex, complex]:
+    """Roots of a x^2 + b x + d (a > 0), larger modulus first, without cancellation.
+
+    Real roots come as floats (signed zeros normalised to +0.0), a complex pair as complex
+    numbers with the positive imaginary part first.
+    """
+    disc = b * b - 4.0 * a * d
+    if disc < 0.0:
+        re, im = -b / (2.0 * a), math.sqrt(-disc) / (2.0 * a)
+        return complex(re, im), complex(re, -im)
+    q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
+    if q == 0.0:  # b = 0 and d = 0: double root at zero
+        return 0.0, 0.0
+    return q / a + 0.0, d / q + 0.0
+
+
+def Isotropic(E, nu, rho=None) -> Orthotropic:
+    """Isotropic material in plane strain as an :class:`Orthotropic`.
+
+    Parameters
+    ----------
+    E : float
+        Young's modulus, finite and > 0.
+    nu : float
+        Poisson's ratio, -1 < nu < 0.5.
+    rho : float or None, optional
+        Mass density (> 0).
+
+    Returns
+    -------
+    Orthotropic
+        C11 = C22 = lambda + 2G, C12 = lambda, C33 = G with G = E / (2 (1 + nu)) and
+        lambda = E nu / ((1 + nu)(1 - 2 nu)).
+    """
+    E = _check_positive("Young's modulus E", E)
+    nu = check_finite("Poisson's ratio nu", nu, MaterialError)
+    if not -1.0 < nu < 0.5:
+        raise MaterialError(f"Poisson's ratio nu must satisfy -1 < nu < 0.5, got {nu!r}")
+    G = E / (2.0 * (1.0 + nu))
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    return Orthotropic(lam + 2.0 * G, lam, lam + 2.0 * G, G, rho=rho)
+
+
+def zhou2014() -> Orthotropic:
+    """The orthotropic material of Zhou et al. 2014, Sec. 6 (stiffnesses in GPa).
+
+    C11 = 159.7885, C12 = 5.2609, C22 = 15.4732, C33 = G0 = 5.52.
+    """
+    return Orthotropic(C11=159.7885, C12=5.2609, C22=15.4732, C33=5.52)
