@@ -1,5 +1,26 @@
-"""contact: moving frictional punch on an orthotropic half-space (Zhou, Lee & Jang 2014).
+"""contact: a rigid punch sliding with Coulomb friction over an orthotropic half-space.
 
-Not implemented yet: this package is the subject of issue 4 and builds on :mod:`sie`.
+Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
+moving punch", Arch. Mech. 66 (2014), corrected (see the errata notes) and generalised:
+any orthotropic material, any punch profile, both directions of sliding.  The numerical
+path goes through :func:`sie.solve`; the paper's closed forms (corrected) are available as
+``method="closed_form"`` and serve as regression oracles.
 """
-__all__: list[str] = []
+from .constants import SurfaceConstants, limiting_speed, rayleigh_speed, surface_constants
+from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError,
+                     LoadError, MaterialError, NearRayleighWarning, ProfileCallableError,
+                     PunchGeometryError, SpeedError)
+from .material import Isotropic, Orthotropic, zhou2014
+from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
+                      TriangularPunch)
+from .solver import ContactResult, contact_length, solve
+
+__all__ = [
+    "Orthotropic", "Isotropic", "zhou2014",
+    "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
+    "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
+    "solve", "ContactResult", "contact_length",
+    "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
+    "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",
+    "NearRayleighWarning",
+]

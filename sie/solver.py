@@ -28,6 +28,7 @@ of phi then decays only like k^{-2}).
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -137,6 +138,16 @@ def _check_breaks(breaks):
 _NEAR_MINUS_ONE = 0.01   # e + 1 below this: the weight's end mass ~ 1/(e+1) is split off
 
 
+@functools.lru_cache(maxsize=256)
+def _gauss_cached(q, a, b):
+    """gauss_jacobi(q, a, b), memoised (read-only arrays): the contact layer solves
+    the same-exponent equation many times while it searches for free contact ends."""
+    x, w = gauss_jacobi(q, a, b)
+    x.flags.writeable = False
+    w.flags.writeable = False
+    return x, w
+
+
 @dataclass(frozen=True)
 class _WeightedRule:
     """int (1-x)^a (1+x)^b g(x) dx  ~  sum_j omega_j g(x_j) + g(end) * corr.
@@ -165,15 +176,15 @@ class _WeightedRule:
     @classmethod
     def build(cls, q, a, b, a_p1, b_p1):
         if min(a_p1, b_p1) >= _NEAR_MINUS_ONE:
-            x, w = gauss_jacobi(q, a, b)
+            x, w = _gauss_cached(q, a, b)
             return cls(x, w, 0, 0.0, a, b, a_p1, b_p1)
         mu0 = jacobi_moment_shifted(a_p1, b_p1)
         if a_p1 < b_p1:                       # the mass sits at x = +1
-            x, w = gauss_jacobi(q, a_p1, b)
+            x, w = _gauss_cached(q, a_p1, b)
             omega = w / (1.0 - x)
             end = 1
         else:
-            x, w = gauss_jacobi(q, a, b_p1)
+            x, w = _gauss_cached(q, a, b_p1)
             omega = w / (1.0 + x)
             end = -1
         return cls(x, omega, end, float(mu0 - omega.sum()), a, b, a_p1, b_p1)
@@ -207,7 +218,7 @@ def _composite_rule(q, alpha, beta, breaks):
         half = 0.5 * (hi - lo)
         ea = alpha if i == len(edges) - 2 else 0.0
         eb = beta if i == 0 else 0.0
-        u, wu = gauss_jacobi(q, ea, eb)
+        u, wu = _gauss_cached(q, ea, eb)
         # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
         s = lo + half * (u + 1.0)
         w = wu * half ** (1.0 + ea + eb)
@@ -254,7 +265,17 @@ class Solution:
     b: float
     _exp: Exponents = field(repr=False)
     _matrix: np.ndarray | None = field(default=None, repr=False)
-    _remainder: object = field(default=None, repr=False)
+    _remainder_factory: object = field(default=None, repr=False)
+    _remainder_cache: object = field(default=None, repr=False)
+
+    @property
+    def _remainder(self):
+        """The breaks correction (:mod:`sie.remainder`), built on first use: a solve whose
+        caller only needs ``integral()`` or ``consistency`` (the contact layer's root
+        searches) never pays for it."""
+        if self._remainder_cache is None and self._remainder_factory is not None:
+            self._remainder_cache = self._remainder_factory()
+        return self._remainder_cache
 
     # -- psi and phi ------------------------------------------------------
     def _points(self, s, name="s"):
@@ -298,10 +319,12 @@ class Solution:
 
     # -- functionals -----------------------------------------------------
     def integral(self):
-        """int_{-1}^{1} psi = mu_0 c_0 (orthogonality of P_k, k >= 1, to 1)."""
+        """int_{-1}^{1} psi = mu_0 c_0 (orthogonality of P_k, k >= 1, to 1).
+
+        Exact also with ``breaks``: the remainder correction inverts components
+        P_m^{(-alpha,-beta)}, m >= n - kappa, into P_k^{(alpha,beta)}, k >= n >= 1,
+        all orthogonal to 1 (and kappa = 1 fixes its null-space part to integral 0)."""
         total = jacobi_moment_shifted(self._exp.alpha_p1, self._exp.beta_p1) * self.coefficients[0]
-        if self._remainder is not None:
-            total += self._remainder.integral()
         return float(total)
 
     def endpoint_value(self, end):
@@ -379,7 +402,7 @@ class Solution:
             xf = x[far]
             # Gauss: error ~ rho_b^(-2 m) for the analytic part; the polynomial needs m >= n/2
             need = int(np.ceil(self.n / 2 + 40.0 / (2.0 * np.log(rho_b[far]).min()))) + 8
-            t, w = gauss_jacobi(max(need, nq), self.alpha, self.beta)
+            t, w = _gauss_cached(max(need, nq), self.alpha, self.beta)
             wf = w * jacobi_series(self.coefficients, self.alpha, self.beta, t)
             out[far] = (wf[None, :] / (t[None, :] - xf[:, None])).sum(axis=1) / math.pi
         if self._remainder is not None:
@@ -561,5 +584,6 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
                    consistency=consistency, a=a, b=b, _exp=e, _matrix=matrix)
     if br.size:
         from .remainder import InversionRemainder
-        sol._remainder = InversionRemainder.build(sol, f, kernel, br, s, ws, fs, fhat, kc, lam)
+        sol._remainder_factory = lambda: InversionRemainder.build(sol, f, kernel, br, s, ws, fs,
+                                                                  fhat, kc, lam)
     return sol
