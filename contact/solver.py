@@ -202,6 +202,25 @@ def _bracket_positive(fun, x0, what, factor=2.0):
                            "rise away from the contact?)")
 
 
+def _bracket_around(fun, x0, what, rel=1e-3):
+    """lo < x0 < hi with fun(lo) < 0 < fun(hi), searched outward from x0 (a good guess):
+    avoids a bracket end that sits on the root itself, where rounding decides the sign."""
+    lo, hi = x0 / (1.0 + rel), x0 * (1.0 + rel)
+    for _ in range(_MAX_BRACKET_STEPS):
+        if fun(lo) < 0:
+            break
+        lo /= 2.0
+    else:
+        raise ContactLossError(f"no {what} below {x0:.6g} leaves the load uncarried")
+    for _ in range(_MAX_BRACKET_STEPS):
+        if fun(hi) > 0:
+            break
+        hi *= 2.0
+    else:
+        raise ContactLossError(f"no {what} above {x0:.6g} carries the load")
+    return lo, hi
+
+
 def _one_free_end(prob: _Problem, hint=None):
     """Index 0: the corner end is fixed, the other end is the root of load = P.
     ``hint``: ends found at a lower n, to search next to."""
@@ -222,12 +241,11 @@ def _one_free_end(prob: _Problem, hint=None):
                 f"(load on a unit contact = {load1:.3g}); the punch face must rise away from it")
         L = (prob.load / load1) ** (1.0 / (hom[1] + 1.0))
         return ends(L)
+    excess = lambda L: prob.load_on(*ends(L)) - prob.load      # noqa: E731
     if hint is not None:
-        scale, factor = hint[1] - hint[0], 1.001
+        lo, hi = _bracket_around(excess, hint[1] - hint[0], "contact length")
     else:
-        scale, factor = _length_scale(punch, xc), 2.0
-    lo, hi = _bracket_positive(lambda L: prob.load_on(*ends(L)) - prob.load, scale,
-                               "contact length", factor)
+        lo, hi = _bracket_positive(excess, _length_scale(punch, xc), "contact length")
     L = brentq(lambda L: prob.load_on(*ends(L)) - prob.load, lo, hi, xtol=1e-15 * hi,
                rtol=4 * np.finfo(float).eps, maxiter=200)
     return ends(L)
@@ -304,8 +322,8 @@ def _two_free_ends(prob: _Problem, hint=None):
 
     if hint is not None:
         track = _CenterTracker(prob, 0.5 * (hint[0] + hint[1]))
-        lo, hi = _bracket_positive(lambda h: load_at(h) - prob.load, 0.5 * (hint[1] - hint[0]),
-                                   "contact half-width", 1.001)
+        lo, hi = _bracket_around(lambda h: load_at(h) - prob.load, 0.5 * (hint[1] - hint[0]),
+                                 "contact half-width")
     else:
         m0 = 0.5 * (min(punch.breaks) + max(punch.breaks)) if punch.breaks else 0.0
         track = _CenterTracker(prob, m0)
@@ -372,6 +390,10 @@ def _check_positive_pressure(sol, xl, xr):
             "more than one contact zone, which this solver does not model")
 
 
+_GAP_RULE = tuple(0.5 * v for v in np.polynomial.legendre.leggauss(24))
+_GAP_RULE = (_GAP_RULE[0] + 0.5, _GAP_RULE[1])          # Gauss-Legendre on [0, 1]
+
+
 def _check_gap(res, prob):
     """The punch face must stay above the surface outside free ends (gap >= 0), checked at
     1/8 .. 16 contact widths beyond each free end.
@@ -381,9 +403,7 @@ def _check_gap(res, prob):
     Gauss-Legendre nodes toward the end, where the integrand behaves like xi^alpha."""
     xl, xr = res.ends
     L = xr - xl
-    u, wu = np.polynomial.legendre.leggauss(24)
-    u = 0.5 * (u + 1.0)
-    wu = 0.5 * wu
+    u, wu = _GAP_RULE
     Ds = L * np.array([0.125, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0])
     N11 = res.constants.N11
     for k, (side, x_end) in enumerate(((-1.0, xl), (1.0, xr))):

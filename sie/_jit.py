@@ -19,6 +19,10 @@ Robustness
   process) makes numba raise an unpickling error on first call; we detect
   unreadable index files of this package at import and remove them, or turn
   caching off if they cannot be removed.
+* A corrupt data file (``.nbc``) behind a valid index is only found when the
+  kernel is first called: every dispatcher's cache lookup is wrapped so that a
+  failing load counts as a cache miss (numba then compiles and overwrites the
+  entry).
 """
 from __future__ import annotations
 
@@ -73,6 +77,23 @@ if CACHE_ENABLED and not _sanitize_cache():
     CACHE_ENABLED = False
 
 
+def _tolerate_corrupt_entries(dispatcher):
+    """Make an unreadable cache entry a cache miss instead of an error on first call."""
+    cache = getattr(dispatcher, "_cache", None)
+    load = getattr(cache, "load_overload", None)
+    if load is None:
+        return dispatcher
+
+    def load_overload(*args, **kwargs):
+        try:
+            return load(*args, **kwargs)
+        except Exception:  # truncated / garbage .nbc: recompile and overwrite
+            return None
+
+    cache.load_overload = load_overload
+    return dispatcher
+
+
 def jit(signature=None, **options):
     """Compile a small, pure numeric kernel with the library's defaults.
 
@@ -91,7 +112,7 @@ def jit(signature=None, **options):
     def decorate(fn):
         args = (signature,) if signature is not None else ()
         try:
-            return numba.jit(*args, **opts)(fn)
+            return _tolerate_corrupt_entries(numba.jit(*args, **opts)(fn))
         except RuntimeError as exc:  # "cannot cache function ...: no locator available"
             if not opts.get("cache"):
                 raise

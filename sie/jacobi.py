@@ -6,6 +6,8 @@ P_k(1) = (a+1)_k / k!, recurrence DLMF 18.9.1-2, norms DLMF Table 18.3.1.
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ._jit import jit
@@ -120,7 +122,14 @@ def jacobi_project(v, a, b, x, n):
 
 
 def jacobi_norms(n, a, b):
-    """h_k = int (1-x)^a (1+x)^b P_k^{(a,b)}(x)^2 dx, k = 0..n-1."""
-    h = _norm_ratios(int(n), float(a), float(b), jacobi_norm(1, a, b) if n > 1 else 0.0)
+    """h_k = int (1-x)^a (1+x)^b P_k^{(a,b)}(x)^2 dx, k = 0..n-1 (a fresh array)."""
+    return _jacobi_norms_cached(int(n), float(a), float(b)).copy()
+
+
+@functools.lru_cache(maxsize=512)
+def _jacobi_norms_cached(n, a, b):
+    # memoised: the contact layer re-solves equations of the same exponents many times
+    h = _norm_ratios(n, a, b, jacobi_norm(1, a, b) if n > 1 else 0.0)
     h[0] = jacobi_norm(0, a, b)
+    h.flags.writeable = False
     return h

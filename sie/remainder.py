@@ -182,7 +182,7 @@ class InversionRemainder:
         tw, ww = self.w_rule
         return float(ww @ self.phi(tw))
 
-    def cauchy_inside(self, x, psi_full, _series_value):
+    def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
         from .solver import _call_checked
         sol = self.sol

@@ -122,6 +122,8 @@ def _call_checked(fn, name, args, shape):
 
 
 def _check_breaks(breaks):
+    if isinstance(breaks, (tuple, list)) and len(breaks) == 0:
+        return np.empty(0)
     try:
         br = np.asarray(breaks, dtype=float).ravel()
     except (TypeError, ValueError):
@@ -377,7 +379,7 @@ class Solution:
             xi = x[inside]
             out[inside] = e.cot * self(xi) - scale / e.sin * self._dominant_image(xi)
             if self._remainder is not None:
-                out[inside] = self._remainder.cauchy_inside(xi, self(xi), out[inside])
+                out[inside] = self._remainder.cauchy_inside(xi, self(xi))
         outside = ~inside
         if np.any(outside):
             out[outside] = self._cauchy_outside(x[outside])
@@ -385,7 +387,6 @@ class Solution:
 
     def _cauchy_outside(self, x):
         e = self._exp
-        nq = self.n
         ax = np.abs(x)
         rho_b = ax + np.sqrt((ax - 1.0) * (ax + 1.0))       # Bernstein ellipse through x
         # closed form loses ~ rho_b^(n) digits to cancellation; use it only while that is < 1e2
@@ -402,7 +403,7 @@ class Solution:
             xf = x[far]
             # Gauss: error ~ rho_b^(-2 m) for the analytic part; the polynomial needs m >= n/2
             need = int(np.ceil(self.n / 2 + 40.0 / (2.0 * np.log(rho_b[far]).min()))) + 8
-            t, w = _gauss_cached(max(need, nq), self.alpha, self.beta)
+            t, w = _gauss_cached(max(need, self.n), self.alpha, self.beta)
             wf = w * jacobi_series(self.coefficients, self.alpha, self.beta, t)
             out[far] = (wf[None, :] / (t[None, :] - xf[:, None])).sum(axis=1) / math.pi
         if self._remainder is not None:
