@@ -18,6 +18,7 @@ $(STAMP): pyproject.toml
 
 run: $(STAMP)
 	$(PY) -m validation.demo
+	$(PY) -m validation.default_scene
 
 test: $(STAMP)
 	$(PY) -m pytest -q
@@ -25,6 +26,7 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[bench]"
 	$(PY) -m validation.bench_sie
+	$(PY) -m validation.bench_contact
 
 clean:
 	rm -rf $(VENV) build *.egg-info validation/out
