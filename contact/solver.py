@@ -307,7 +307,9 @@ def _two_free_ends(prob: _Problem, hint=None):
     hom = punch.homogeneous
     if hom is not None:
         x0, d = hom
-        track = _CenterTracker(prob, x0 if hint is None else 0.5 * (hint[0] + hint[1]))
+        # the unit contact's center does not scale with the hint: start from x0 (a distant
+        # start widens the bracket and brentq's absolute tolerance with it)
+        track = _CenterTracker(prob, x0)
         m1 = track(1.0)
         load1 = prob.load_on(m1 - 1.0, m1 + 1.0)
         if not load1 > 0:
@@ -570,7 +572,7 @@ def _solve_adaptive(prob, adaptive, tol):
         # compare phi on the common normalised interval: p differs by the end shift anyway
         p1, p2 = sol.phi(s), sol2.phi(s)
         d_p = np.max(np.abs(p2 - p1)) / max(np.max(np.abs(p2)), np.finfo(float).tiny)
-        if max(d_ends, d_p) <= tol or prob2.n >= _N_MAX:
+        if max(d_ends, d_p) <= tol or 2 * prob2.n > _N_MAX:
             if max(d_ends, d_p) > tol:
                 warnings.warn(f"contact.solve: n = {prob2.n} reached with a change of "
                               f"{max(d_ends, d_p):.2g} (> tol = {tol:.2g}) between n and 2n",
