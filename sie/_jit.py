@@ -77,6 +77,9 @@ if CACHE_ENABLED and not _sanitize_cache():
     CACHE_ENABLED = False
 
 
+_WARNED: list = []
+
+
 def _tolerate_corrupt_entries(dispatcher):
     """Make an unreadable cache entry a cache miss instead of an error on first call."""
     cache = getattr(dispatcher, "_cache", None)
@@ -116,8 +119,10 @@ def jit(signature=None, **options):
         except RuntimeError as exc:  # "cannot cache function ...: no locator available"
             if not opts.get("cache"):
                 raise
-            warnings.warn(f"sie: numba cache unavailable ({exc}); compiling without it",
-                          RuntimeWarning, stacklevel=2)
+            if not _WARNED:                       # once per process, not once per kernel
+                _WARNED.append(True)
+                warnings.warn(f"sie: numba cache unavailable ({exc}); compiling without it",
+                              RuntimeWarning, stacklevel=2)
             return numba.jit(*args, **{**opts, "cache": False})(fn)
 
     return decorate

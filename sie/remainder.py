@@ -59,7 +59,7 @@ def graded_points(breaks):
 _Q_SMALL = 16         # Gauss nodes on a graded sub-interval (pole at >= 1.15 its length)
 
 
-def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL):
+def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
     """Composite rule for int (1-x)^alpha (1+x)^beta g on the graded mesh ``pts``:
     q nodes on the pieces that span most of a gap between breaks, _Q_SMALL on the
     geometric sub-intervals next to a break."""
@@ -72,9 +72,9 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL):
         j = np.searchsorted(gaps, 0.5 * (lo + hi))
         gap = gaps[j] - gaps[j - 1]
         if (hi - lo) > 0.2 * gap or lo == -1.0 or hi == 1.0:
-            qq = q
+            qq = q + shift
         else:   # the polynomial part oscillates on the scale 1/n: nodes in proportion
-            qq = q_small + int(math.ceil(q * (hi - lo) / gap))
+            qq = q_small + int(math.ceil(q * (hi - lo) / gap)) + shift
         # one piece of the composite rule: breaks at lo and hi only
         inner = np.array([v for v in (lo, hi) if -1.0 < v < 1.0])
         x, w = _composite_rule(qq, alpha, beta, inner)
@@ -127,8 +127,9 @@ class InversionRemainder:
         # a geometric mesh resolves a pole at any distance; without it phi(c + 1e-3) was
         # off by 1e-4 at n = 24)
         pts = graded_points(breaks)
-        for shift in (0, 1):    # two interleaved rules: no x is a node of both
-            nodes, weights = _graded_rule(q + shift, -alpha, -beta, breaks, pts, _Q_SMALL + shift)
+        for shift in (0, 1):    # two interleaved rules: counts differ by one on every piece,
+            # so no x (e.g. a piece midpoint, a node of every odd-count rule) is a node of both
+            nodes, weights = _graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
             fvals = _call_checked(f, "f", (nodes,), nodes.shape)
             self.rules.append((nodes, weights, self._r(nodes, fvals)))
         # rule for integrals against w: delta_phi behaves like (x - c) log|x - c| at a break c,
