@@ -7,6 +7,10 @@ its derivatives jumps (``breaks``).  Contact ends without a corner are free: the
 vanishes there and the end is found from the load (and, for two free ends, from the
 solvability condition of the index -1 equation, eq. (5.40)).
 
+``slope_degree`` says the slope is a polynomial of that degree: then the right-hand side of
+the equation is one too, its Jacobi projection is exact with a few terms, and the solver
+uses a small fixed n instead of doubling n until two solutions agree.
+
 ``homogeneous`` records an exact scaling law when the slope has one,
 slope(x0 + lam xi) = lam^d slope(x0 + xi): the solver then finds the contact size with one
 solve instead of a root search (the load scales like size^(d+1)).  It is a statement about the
@@ -42,6 +46,7 @@ class Punch:
     corners: tuple = (None, None)
     breaks: tuple = ()
     homogeneous: Optional[tuple] = None      # (x0, d): slope(x0 + lam xi) = lam^d slope(x0 + xi)
+    slope_degree: Optional[int] = None       # the slope is a polynomial of this degree
     kind: str = "profile"
 
     def _slope(self, X):                      # pragma: no cover - abstract
@@ -82,6 +87,7 @@ class FlatPunch(Punch):
     """Flat-ended punch of half-width a: contact [-a, a], sharp corners at both ends
     (index 1; Zhou et al. 2014, Sec. 5.1)."""
     kind = "flat"
+    slope_degree = 0
 
     def __init__(self, half_width):
         self.half_width = _positive("half_width", half_width)
@@ -98,6 +104,7 @@ class TriangularPunch(Punch):
     """Wedge face v = -v0 + m0 X, sharp corner at X = 0, contact [0, b] (index 0;
     Zhou et al. 2014, Sec. 5.2).  ``slope`` is m0 > 0."""
     kind = "triangular"
+    slope_degree = 0
     corners = (0.0, None)
     homogeneous = (0.0, 0)
 
@@ -115,6 +122,7 @@ class ParabolicPunch(Punch):
     """Face v = -v0 + X^2/(2R) on [0, b], sharp corner at X = 0 (index 0;
     Zhou et al. 2014, Sec. 5.3)."""
     kind = "parabolic"
+    slope_degree = 1
     corners = (0.0, None)
     homogeneous = (0.0, 1)
 
@@ -132,6 +140,7 @@ class CylindricalPunch(Punch):
     """Face v = -v0 + X^2/(2R) (a + b << R), both contact ends free (index -1;
     Zhou et al. 2014, Sec. 5.4)."""
     kind = "cylindrical"
+    slope_degree = 1
     corners = (None, None)
     homogeneous = (0.0, 1)
 

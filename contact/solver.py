@@ -159,27 +159,40 @@ class _Problem:
     def right(self):
         return self.punch.ends[1]
 
-    def solve_on(self, xl, xr, n=None):
+    def _equation(self, xl, xr):
         h = 0.5 * (xr - xl)
         m = 0.5 * (xr + xl)
         slope = self.punch.slope
         br = [(x - m) / h for x in self.punch.breaks if xl < x < xr]
         br = [s for s in br if abs(s) < 1.0 - 1e-12]
-        total = self.load / h if self.punch.kappa == 1 else None
+        return h, (lambda s: slope(h * s + m)), br
+
+    def _call_sie(self, fn, **kw):
         try:
-            return sie.solve(lambda s: slope(h * s + m), a=self.a, b=self.b,
-                             n=self.n if n is None else n, left=self.left, right=self.right,
-                             total=total, breaks=br)
+            return fn(a=self.a, b=self.b, left=self.left, right=self.right, **kw)
         except CallableOutputError as exc:
             if isinstance(exc.__cause__, ContactInputError):
                 raise exc.__cause__ from None
             raise
 
+    def solve_on(self, xl, xr, n=None):
+        """The full solution on the trial contact [xl, xr]."""
+        h, f, br = self._equation(xl, xr)
+        total = self.load / h if self.punch.kappa == 1 else None
+        return self._call_sie(lambda **kw: sie.solve(f, **kw), n=self.n if n is None else n,
+                              total=total, breaks=br)
+
+    def functionals_on(self, xl, xr):
+        """(load carried, solvability residual) on [xl, xr], without forming the solution."""
+        h, f, br = self._equation(xl, xr)
+        fun = self._call_sie(lambda **kw: sie.dominant_functionals(f, **kw), n=self.n, breaks=br)
+        return h * fun.integral, fun.consistency
+
     def load_on(self, xl, xr):
-        return 0.5 * (xr - xl) * self.solve_on(xl, xr).integral()
+        return self.functionals_on(xl, xr)[0]
 
     def consistency_on(self, xl, xr):
-        return self.solve_on(xl, xr).consistency
+        return self.functionals_on(xl, xr)[1]
 
 
 def _bracket_positive(fun, x0, what, factor=2.0):
@@ -264,19 +277,25 @@ class _CenterTracker:
     def __init__(self, prob: _Problem, m0: float):
         self.prob = prob
         self.m = m0
+        self.window = 0.25
+        self.xtol_rel = 1e-14       # loosened while only bracketing the half-width
+
+    def restart(self, m0):
+        self.m = m0
+        self.window = 0.25
 
     def g(self, m, h):
         return self.prob.consistency_on(m - h, m + h)
 
     def __call__(self, h):
         m0 = self.m
-        w = 0.25 * h
+        w = self.window * h          # small once the center is known from a nearby h
         lo, hi = m0 - w, m0 + w
         glo, ghi = self.g(lo, h), self.g(hi, h)
         for _ in range(_MAX_BRACKET_STEPS):
             if glo <= 0.0 <= ghi:
                 break
-            w *= 2.0
+            w *= 4.0
             if glo > 0.0:
                 lo, glo = m0 - w, self.g(m0 - w, h)
             if ghi < 0.0:
@@ -286,13 +305,19 @@ class _CenterTracker:
                 "no contact position satisfies the solvability condition of the index -1 "
                 f"equation at half-width {h:.6g} (the weighted mean slope does not change sign "
                 "from - to +): the profile has no contact zone with two free ends here")
+        # one secant step first: exact when the slope is linear (g affine in m)
+        m_sec = lo - glo * (hi - lo) / (ghi - glo) if ghi != glo else 0.5 * (lo + hi)
+        g_sec = self.g(m_sec, h) if lo < m_sec < hi else math.inf
         if glo == 0.0:
             self.m = lo
         elif ghi == 0.0:
             self.m = hi
+        elif abs(g_sec) <= 4 * np.finfo(float).eps * (abs(glo) + abs(ghi)):
+            self.m = m_sec
         else:
-            self.m = brentq(lambda m: self.g(m, h), lo, hi, xtol=1e-15 * max(h, abs(lo), abs(hi)),
+            self.m = brentq(lambda m: self.g(m, h), lo, hi, xtol=self.xtol_rel * h,
                             rtol=4 * np.finfo(float).eps, maxiter=200)
+        self.window = 0.01
         return self.m
 
 
@@ -318,9 +343,15 @@ def _two_free_ends(prob: _Problem, hint=None):
         lam = (prob.load / load1) ** (1.0 / (d + 1.0))
         return (x0 + lam * (m1 - 1.0 - x0), x0 + lam * (m1 + 1.0 - x0))
 
+    memo = {}
+
     def load_at(h):
-        m = track(h)
-        return h * prob.solve_on(m - h, m + h).integral()
+        # memoised: brentq re-evaluates the bracket ends found while bracketing, and a
+        # contact inside a flat seat makes the center root degenerate (slow to converge)
+        if h not in memo:
+            m = track(h)
+            memo[h] = prob.load_on(m - h, m + h)
+        return memo[h]
 
     if hint is not None:
         track = _CenterTracker(prob, 0.5 * (hint[0] + hint[1]))
@@ -329,11 +360,12 @@ def _two_free_ends(prob: _Problem, hint=None):
     else:
         m0 = 0.5 * (min(punch.breaks) + max(punch.breaks)) if punch.breaks else 0.0
         track = _CenterTracker(prob, m0)
+        track.xtol_rel = 1e-6       # bracketing needs the load only roughly
         h = 0.5 * _length_scale(punch, m0)
         for _ in range(_MAX_BRACKET_STEPS):          # up: a contact that carries 4P
             if load_at(h) >= 4.0 * prob.load:
                 break
-            track.m = m0
+            track.restart(m0)
             h *= 2.0
         else:
             raise ContactLossError("no contact width carries the load (the load stays below it "
@@ -346,6 +378,7 @@ def _two_free_ends(prob: _Problem, hint=None):
             raise ContactLossError("the load is carried by every contact width down to 1e-60 "
                                    "of the starting one: the profile has a flat or concave seat")
         lo, hi = 0.5 * h, h
+        track.xtol_rel = 1e-14
     track.m = track(hi)
     h = brentq(lambda h: load_at(h) - prob.load, lo, hi, xtol=1e-15 * hi,
                rtol=4 * np.finfo(float).eps, maxiter=200)
@@ -392,7 +425,7 @@ def _check_positive_pressure(sol, xl, xr):
             "more than one contact zone, which this solver does not model")
 
 
-_GAP_RULE = tuple(0.5 * v for v in np.polynomial.legendre.leggauss(24))
+_GAP_RULE = tuple(0.5 * v for v in np.polynomial.legendre.leggauss(12))
 _GAP_RULE = (_GAP_RULE[0] + 0.5, _GAP_RULE[1])          # Gauss-Legendre on [0, 1]
 
 
@@ -492,8 +525,14 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     if method == "closed_form":
         return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f)
     a = const.N12 * mu_f if mu_f != 0.0 else 0.0        # no friction terms at mu = 0
-    prob = _Problem(punch, a, const.N11, load, n if n is not None else _N_DEFAULT)
-    ends, sol = _solve_adaptive(prob, n is None, tol)
+    if n is None and punch.slope_degree is not None:
+        # polynomial right-hand side of degree d: the projection with n - kappa > d terms is
+        # exact, so phi (degree <= d + 1) is too; no doubling needed
+        n_use, adaptive = punch.slope_degree + 4, False
+    else:
+        n_use, adaptive = (n if n is not None else _N_DEFAULT), n is None
+    prob = _Problem(punch, a, const.N11, load, n_use)
+    ends, sol = _solve_adaptive(prob, adaptive, tol)
     xl, xr = ends
     h = 0.5 * (xr - xl)
     _check_positive_pressure(sol, xl, xr)
@@ -555,6 +594,23 @@ def _ends_for(prob, hint=None):
     return _two_free_ends(prob, hint)
 
 
+def _ends_hold(prob, ends, tol):
+    """Do the ends found at a lower n satisfy this n's end conditions to tol?  (Load within
+    tol P; for two free ends also the solvability residual within tol of the slope scale.)
+    Then the search at this n would move them by ~tol of the width, and is skipped."""
+    k = prob.punch.kappa
+    if k == 1:
+        return True
+    load, resid = prob.functionals_on(*ends)
+    if not abs(load - prob.load) <= tol * prob.load:
+        return False
+    if k == 0:
+        return True
+    h, m = 0.5 * (ends[1] - ends[0]), 0.5 * (ends[1] + ends[0])
+    scale = np.max(np.abs(prob.punch.slope(m + h * np.linspace(-1.0, 1.0, 9))))
+    return abs(resid) <= tol * scale
+
+
 def _solve_adaptive(prob, adaptive, tol):
     """Find the ends and the solution; with ``adaptive``, double n until the pressure at
     check points and the ends agree between n and 2n to ``tol``."""
@@ -565,7 +621,7 @@ def _solve_adaptive(prob, adaptive, tol):
     s = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
     while True:
         prob2 = _Problem(prob.punch, prob.a, prob.b, prob.load, 2 * prob.n)
-        ends2 = _ends_for(prob2, hint=ends)
+        ends2 = ends if _ends_hold(prob2, ends, tol) else _ends_for(prob2, hint=ends)
         sol2 = prob2.solve_on(*ends2)
         width = ends2[1] - ends2[0]
         d_ends = max(abs(ends2[0] - ends[0]), abs(ends2[1] - ends[1])) / width

@@ -61,26 +61,32 @@ _Q_SMALL = 16         # Gauss nodes on a graded sub-interval (pole at >= 1.15 it
 
 def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
     """Composite rule for int (1-x)^alpha (1+x)^beta g on the graded mesh ``pts``:
-    q nodes on the pieces that span most of a gap between breaks, _Q_SMALL on the
-    geometric sub-intervals next to a break."""
-    from .solver import _composite_rule
+    q (+ shift) nodes on the pieces that span most of a gap between breaks, fewer (in
+    proportion to the piece, at least q_small) on the geometric sub-intervals next to a
+    break.  End pieces carry their end's Jacobi weight in the rule; elsewhere it is smooth
+    and multiplies the Gauss-Legendre weights."""
+    from .solver import _gauss_cached
     edges = np.concatenate([[-1.0], pts, [1.0]])
     gaps = np.concatenate([[-1.0], breaks, [1.0]])
+    los, his = edges[:-1], edges[1:]
+    j = np.searchsorted(gaps, 0.5 * (los + his))
+    gap = gaps[j] - gaps[j - 1]
+    big = ((his - los) > 0.2 * gap) | (los == -1.0) | (his == 1.0)
+    counts = np.where(big, q, q_small + np.ceil(q * (his - los) / gap).astype(int)) + shift
     xs, ws = [], []
-    for lo, hi in zip(edges[:-1], edges[1:]):
-        # length of the gap between breaks that contains this piece
-        j = np.searchsorted(gaps, 0.5 * (lo + hi))
-        gap = gaps[j] - gaps[j - 1]
-        if (hi - lo) > 0.2 * gap or lo == -1.0 or hi == 1.0:
-            qq = q + shift
-        else:   # the polynomial part oscillates on the scale 1/n: nodes in proportion
-            qq = q_small + int(math.ceil(q * (hi - lo) / gap)) + shift
-        # one piece of the composite rule: breaks at lo and hi only
-        inner = np.array([v for v in (lo, hi) if -1.0 < v < 1.0])
-        x, w = _composite_rule(qq, alpha, beta, inner)
-        sel = (x >= lo) & (x <= hi)
-        xs.append(x[sel])
-        ws.append(w[sel])
+    for lo, hi, qq in zip(los, his, counts):
+        half = 0.5 * (hi - lo)
+        ea = alpha if hi == 1.0 else 0.0
+        eb = beta if lo == -1.0 else 0.0
+        u, wu = _gauss_cached(int(qq), ea, eb)
+        x = lo + half * (u + 1.0)
+        w = wu * half ** (1.0 + ea + eb)
+        if hi != 1.0:
+            w = w * (1.0 - x) ** alpha
+        if lo != -1.0:
+            w = w * (1.0 + x) ** beta
+        xs.append(x)
+        ws.append(w)
     return np.concatenate(xs), np.concatenate(ws)
 
 

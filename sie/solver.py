@@ -41,7 +41,7 @@ from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
 from .special import jacobi_end_values, jacobi_moment_shifted
 
-__all__ = ["solve", "Solution", "sie_exponents", "Exponents"]
+__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals", "Functionals"]
 
 END_CHOICES = ("bounded", "singular")
 _EXTRA_PER_PIECE = 24       # extra nodes per piece of the composite rule (breaks)
@@ -470,6 +470,92 @@ def _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h):
     return khat / h[:, None]
 
 
+def _check_equation(f, a, b, left, right):
+    """Validate a, b, the end choices and f; return (a, b, exponents)."""
+    a = check_finite_real("a", a, InvalidCoefficientError)
+    b = check_finite_real("b", b, InvalidCoefficientError)
+    if b == 0.0:
+        raise InvalidCoefficientError(
+            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
+    for name, v in (("left", left), ("right", right)):
+        if v not in END_CHOICES:
+            raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
+    if not callable(f):
+        raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+    return a, b, sie_exponents(a, b, left, right)
+
+
+def _lambda(e, b):
+    """lambda = -2^{-kappa} b / sin(pi alpha): a w P_k + b H[w P_k] = lambda P_{k-kappa}^{(-alpha,-beta)}."""
+    return -(2.0 ** (-e.kappa)) * b / e.sin
+
+
+def _project_rhs(f, e, m_eq, br, count):
+    """f_m = <f, P_m^{(-alpha,-beta)}> / h_m for m < count, by the Gauss rule of m_eq nodes
+    (end-mass corrected) or, with breaks, the composite rule.
+
+    Returns (rule or None, nodes, weights, f at nodes, f_m, h_m)."""
+    alpha, beta = e.alpha, e.beta
+    h = jacobi_norms(count, -alpha, -beta)
+    h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
+    if br.size == 0:
+        rule = _WeightedRule.build(m_eq, -alpha, -beta, e.alpha_m1, e.beta_m1)
+        s, ws = rule.x, rule.omega
+    else:
+        rule = None
+        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
+    fs = _call_checked(f, "f", (s,), s.shape)
+    if rule is not None and rule.end:
+        f_end = float(_call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
+        fhat = rule.project(fs, f_end, count) / h
+    else:
+        fhat = jacobi_project(ws * fs, -alpha, -beta, s, count) / h
+    return rule, s, ws, fs, fhat, h
+
+
+@dataclass(frozen=True)
+class Functionals:
+    """What a search over the interval needs, without forming the solution.
+
+    integral : float or None
+        int psi for kappa <= 0 (mu_0 c_0); None for kappa = 1 (it is the side condition).
+    consistency : float or None
+        kappa = -1: the solvability residual (as ``Solution.consistency``); None otherwise.
+    alpha, beta : float
+    kappa : int
+    """
+    integral: float | None
+    consistency: float | None
+    alpha: float
+    beta: float
+    kappa: int
+
+
+def dominant_functionals(f, *, a, b, n, left, right, breaks=()):
+    """int psi and the solvability residual of a psi + (b/pi) PV int psi/(t-s) dt = f,
+    exactly as :func:`solve` (same rule, same n) would return them, at the cost of one
+    Gauss sum: int psi = mu_0 c_0 with c_0 = f_0/lambda (kappa = 0) or f_1/lambda
+    (kappa = -1), and the residual is f_0 (kappa = -1).
+
+    For searches over the interval (free contact ends), where the full solution is only
+    needed at the end.  No kernel.
+    """
+    a, b, e = _check_equation(f, a, b, left, right)
+    n = check_order(n, 2 if e.kappa == 1 else 1)
+    br = _check_breaks(breaks)
+    kappa = e.kappa
+    if kappa == 1:
+        return Functionals(None, None, e.alpha, e.beta, 1)
+    m_eq = n - kappa
+    count = 1 if kappa == 0 else 2
+    _, _, _, _, fhat, _ = _project_rhs(f, e, m_eq, br, count)
+    mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)
+    lam = _lambda(e, b)
+    if kappa == 0:
+        return Functionals(float(mu0 * fhat[0] / lam), None, e.alpha, e.beta, 0)
+    return Functionals(float(mu0 * fhat[1] / lam), float(fhat[0]), e.alpha, e.beta, -1)
+
+
 # --------------------------------------------------------------------------
 # the solver
 # --------------------------------------------------------------------------
@@ -502,19 +588,9 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
     Collocation at the roots of P_{n-kappa}^{(-alpha,-beta)} (Erdogan, Gupta &
     Cook 1973; Krenk 1975): spectral convergence for analytic f and k.
     """
-    a = check_finite_real("a", a, InvalidCoefficientError)
-    b = check_finite_real("b", b, InvalidCoefficientError)
-    if b == 0.0:
-        raise InvalidCoefficientError(
-            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
-    for name, v in (("left", left), ("right", right)):
-        if v not in END_CHOICES:
-            raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
-    if not callable(f):
-        raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+    a, b, e = _check_equation(f, a, b, left, right)
     if kernel is not None and not callable(kernel):
         raise CallableOutputError(f"kernel must be a callable k(s, t) or None, got {type(kernel).__name__}")
-    e = sie_exponents(a, b, left, right)
     kappa = e.kappa
     n = check_order(n, 2 if kappa == 1 else 1,
                     " for index 1 (both ends singular)" if kappa == 1 else "")
@@ -529,23 +605,10 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
     br = _check_breaks(breaks)
 
     alpha, beta = e.alpha, e.beta
-    lam = -(2.0 ** (-kappa)) * b / e.sin
+    lam = _lambda(e, b)
     mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)          # int w, exact
     m_eq = n - kappa                           # projected equations, m = 0..m_eq-1
-    h = jacobi_norms(m_eq, -alpha, -beta)
-    h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
-    if br.size == 0:
-        rule = _WeightedRule.build(m_eq, -alpha, -beta, e.alpha_m1, e.beta_m1)
-        s, ws = rule.x, rule.omega
-    else:
-        rule = None
-        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
-    fs = _call_checked(f, "f", (s,), s.shape)
-    if rule is not None and rule.end:
-        f_end = float(_call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
-        fhat = rule.project(fs, f_end, m_eq) / h
-    else:
-        fhat = jacobi_project(ws * fs, -alpha, -beta, s, m_eq) / h
+    rule, s, ws, fs, fhat, h = _project_rhs(f, e, m_eq, br, m_eq)
 
     matrix = None
     if kernel is None:

@@ -8,6 +8,7 @@ quantities needed by Gauss-Jacobi weights are ratios Gamma(z+a)/Gamma(z) with
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -83,6 +84,7 @@ def gauss_jacobi_constant(n: int, alpha: float, beta: float) -> float:
         log_gamma_ratio(n + 1.0, alpha) + log_gamma_ratio(n + alpha + beta + 1.0, -alpha))
 
 
+@functools.lru_cache(maxsize=1024)
 def jacobi_moment_shifted(alpha_p1: float, beta_p1: float) -> float:
     """mu_0 = int (1-x)^alpha (1+x)^beta dx from the shifted exponents alpha+1, beta+1.
 
