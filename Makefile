@@ -14,11 +14,11 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e ".[test]"
+	$(PY) -m sie.warmup    # compile the numba kernels into the on-disk cache once
 	touch $(STAMP)
 
 run: $(STAMP)
-	$(PY) -m validation.demo
-	$(PY) -m validation.default_scene
+	$(PY) -m contact run --out contact-out
 
 test: $(STAMP)
 	$(PY) -m pytest -q
@@ -29,4 +29,4 @@ bench: $(STAMP)
 	$(PY) -m validation.bench_contact
 
 clean:
-	rm -rf $(VENV) build *.egg-info validation/out
+	rm -rf $(VENV) build *.egg-info validation/out contact-out

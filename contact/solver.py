@@ -76,7 +76,6 @@ class ContactResult:
     n: int
     residual: float
     load_check: float
-    sif: dict
     constants: SurfaceConstants
     load: float
     speed: float
@@ -86,6 +85,14 @@ class ContactResult:
     punch: Punch
     method: str = "numeric"
     solution: object = field(default=None, repr=False)
+    _sif: dict | None = field(default=None, repr=False)
+
+    @property
+    def sif(self) -> dict:
+        """Stress intensity factors (see the class docstring), computed on first access."""
+        if self._sif is None:
+            self._sif = _sif(self.solution, self.punch, self.half_width)
+        return self._sif
 
     # geometry ------------------------------------------------------------
     @property
@@ -491,7 +498,7 @@ def _check_inputs(material, punch, load, speed, friction, direction, method, n, 
 
 
 def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="numeric",
-          n=None, tol=1e-12):
+          n=None, tol=1e-12, constants=None):
     """Contact pressure, contact extent, SIFs and surface stress of a sliding punch.
 
     Parameters
@@ -513,6 +520,9 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         Jacobi coefficients; by default chosen adaptively until two successive n agree to tol.
     tol : float
         Target relative accuracy of the pressure (adaptive n).
+    constants : SurfaceConstants, optional
+        ``surface_constants(material, speed)`` computed beforehand (a sweep over friction
+        at one speed shares them); must be for this speed.
 
     Returns
     -------
@@ -520,7 +530,15 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
-    const = surface_constants(material, speed)
+    if constants is None:
+        const = surface_constants(material, speed)
+    else:
+        if not isinstance(constants, SurfaceConstants):
+            raise ContactInputError(f"constants must be a contact.SurfaceConstants or None, got "
+                                    f"{type(constants).__name__}")
+        if constants.c != check_finite("speed", speed, ContactInputError):
+            raise ContactInputError(f"constants are for speed {constants.c!r}, but speed = {speed!r}")
+        const = constants
     mu_f = -direction * friction if friction != 0.0 else 0.0
     if method == "closed_form":
         return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f)
@@ -539,7 +557,7 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     res = ContactResult(
         ends=(float(xl), float(xr)), alpha=sol.alpha, beta=sol.beta, kappa=sol.kappa, n=sol.n,
         residual=_residual(sol, prob, xl, xr), load_check=abs(h * sol.integral() - load) / load,
-        sif=_sif(sol, punch, h), constants=const, load=load, speed=float(speed),
+        constants=const, load=load, speed=float(speed),
         friction=friction, direction=direction, mu_f=mu_f, punch=punch, method="numeric",
         solution=sol)
     if punch.kappa < 1:
@@ -580,9 +598,9 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
             f'CylindricalPunch; use method="numeric" for {type(punch).__name__}')
     return _ClosedFormContactResult(
         ends=tuple(float(x) for x in c.ends), alpha=c.alpha, beta=c.beta, kappa=c.kappa, n=2,
-        residual=0.0, load_check=c.load_check, sif=dict(c.sif), constants=const, load=load,
+        residual=0.0, load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
-        method="closed_form", solution=c)
+        method="closed_form", solution=c, _sif=dict(c.sif))
 
 
 def _ends_for(prob, hint=None):

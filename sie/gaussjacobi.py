@@ -42,7 +42,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.linalg import eigh_tridiagonal
 
 from ._jit import jit
 from .errors import check_exponent, check_order
@@ -434,6 +433,11 @@ def _golub_welsch_guess(n, a, b):
     ratio = np.ones_like(kk)
     ratio[1:] = (kk[1:] + a + b) / (s1[1:] - 1.0)
     off = 2.0 / s1 * np.sqrt(kk * (kk + a) * (kk + b) * ratio / (s1 + 1.0))
+    if n <= 40:
+        # dense LAPACK via numpy is faster here and keeps scipy (~0.2 s of import) off the
+        # first-call path of small problems
+        return np.linalg.eigvalsh(np.diag(diag) + np.diag(off, 1) + np.diag(off, -1))
+    from scipy.linalg import eigh_tridiagonal      # lazy: only for 40 < n <= 100
     return eigh_tridiagonal(diag, off, eigvals_only=True)
 
 

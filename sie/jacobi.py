@@ -16,7 +16,7 @@ from .special import jacobi_norm
 __all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms"]
 
 
-@jit()
+@jit(inline="always")
 def _step(k, a, b):
     """Coefficients of P_{k+1} = (A x + B) P_k - C P_{k-1}, k >= 1 (DLMF 18.9.2)."""
     s = 2.0 * k + a + b
@@ -103,22 +103,27 @@ def _norm_ratios(n, a, b, h1):
     return h
 
 
+def _f64(x):
+    """C-contiguous, writeable float64: one numba specialisation per kernel (a read-only
+    array, e.g. a memoised Gauss rule, is a different numba type and would compile again)."""
+    x = np.ascontiguousarray(x, dtype=float)
+    return x if x.flags.writeable else x.copy()
+
+
 def jacobi_series(c, a, b, x):
     """Evaluate sum_k c[k] P_k^{(a,b)}(x) at the points x (any real x)."""
     x = np.asarray(x, dtype=float)
-    return _series(np.ascontiguousarray(c, dtype=float), float(a), float(b),
-                   np.ascontiguousarray(x.ravel())).reshape(x.shape)
+    return _series(_f64(c), float(a), float(b), _f64(x.ravel())).reshape(x.shape)
 
 
 def jacobi_vandermonde(n, a, b, x):
     """Matrix V[i, k] = P_k^{(a,b)}(x_i), k = 0..n-1."""
-    return _vandermonde(int(n), float(a), float(b), np.ascontiguousarray(x, dtype=float))
+    return _vandermonde(int(n), float(a), float(b), _f64(x))
 
 
 def jacobi_project(v, a, b, x, n):
     """Vector sum_i v_i P_k^{(a,b)}(x_i), k = 0..n-1 (no n-by-len(x) matrix is formed)."""
-    return _project(np.ascontiguousarray(v, dtype=float), float(a), float(b),
-                    np.ascontiguousarray(x, dtype=float), int(n))
+    return _project(_f64(v), float(a), float(b), _f64(x), int(n))
 
 
 def jacobi_norms(n, a, b):

@@ -1,0 +1,244 @@
+"""The ``contact`` command: run scenes, print Table 1 and the surface constants.
+
+    contact run [SCENE.toml] [--out DIR] [--jobs N] [--quiet] [--scheduler ADDRESS]
+    contact table1 [--digits D]
+    contact constants --speed C [SCENE.toml]
+
+A user error (a bad scene, an inadmissible speed, a profile that loses contact) prints one
+message naming the file, the key and what is allowed, and exits with status 2 (a bad scene or
+argument) or 1 (a case that failed while it was solved) -- never a traceback.
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+from concurrent.futures import ProcessPoolExecutor
+
+import contact
+import sie
+
+from . import scene as scenes
+
+#: The 14 relative speeds of Table 1 in Zhou, Lee & Jang 2014.
+TABLE1_SPEEDS = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.5, 2.0, 10.0)
+
+EXIT_BAD_INPUT = 2
+EXIT_CASE_FAILED = 1
+
+
+class UsageError(Exception):
+    """A command-line problem that is not about the scene file (e.g. --scheduler without
+    the dask extra)."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="contact",
+        description="Moving frictional contact on an orthotropic half-space (Zhou, Lee & Jang "
+                    "2014, corrected): run TOML scenes, print the paper's Table 1 and the "
+                    "surface constants.",
+        epilog="Scene format: see the docstring of contact.scene (python -c 'import "
+               "contact.scene as s; help(s)') and the examples in validation/scenes/.")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    run = sub.add_parser(
+        "run", help="run a scene (or the embedded default) and write result.json, CSV, PNG",
+        description="Run a scene file (without one: the embedded default, the paper's material "
+                    "and a cylindrical punch at c = 0.6, mu = 0.3), print a short table and "
+                    "write result.json, one CSV per sampled curve and PNG figures into --out.")
+    run.add_argument("scene", nargs="?", metavar="SCENE.toml",
+                     help="scene file (default: the embedded default scene)")
+    run.add_argument("--out", default="contact-out", metavar="DIR",
+                     help="output directory (default: ./contact-out)")
+    run.add_argument("--jobs", type=_jobs, default=1, metavar="N",
+                     help="solve sweep points in N worker processes (0: one per CPU; default 1)")
+    run.add_argument("--scheduler", metavar="ADDRESS",
+                     help="send the sweep to a Dask cluster at ADDRESS (needs the optional "
+                          "extra: pip install 'sie-contact[dask]')")
+    run.add_argument("--quiet", action="store_true",
+                     help="no progress bar, no table, no list of files written")
+    run.set_defaults(handler=cmd_run)
+
+    t1 = sub.add_parser(
+        "table1", help="print Table 1 of the paper: characteristic roots at its 14 speeds",
+        description="Characteristic roots eta1, -eta1, eta3, -eta3 of eq. (3.1) for the paper's "
+                    "material at the 14 relative speeds of its Table 1.")
+    t1.add_argument("--digits", type=int, default=4, help="decimals shown (default 4)")
+    t1.set_defaults(handler=cmd_table1)
+
+    k = sub.add_parser(
+        "constants", help="print the surface constants N11, N12, N21, N22 and c_R",
+        description="Surface constants of eqs. (4.5)-(4.6) (dv/dX = N12 q + N11 Hc[p], "
+                    "sigma_XX = N21 p + N22 Hc[q]) and the Rayleigh speed c_R, for the scene's "
+                    "material (default: the paper's).")
+    k.add_argument("scene", nargs="?", metavar="SCENE.toml",
+                   help="take the material (and, without --speed, the speeds) from this scene")
+    k.add_argument("--speed", type=float, metavar="C",
+                   help="relative speed c = V / sqrt(C33/rho), 0 <= c < c_R")
+    k.set_defaults(handler=cmd_constants)
+    return parser
+
+
+def _jobs(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer >= 0, got {text!r}") from None
+    if n < 0:
+        raise argparse.ArgumentTypeError(f"must be an integer >= 0, got {n}")
+    return n
+
+
+def main(argv=None) -> int:
+    """Entry point of the ``contact`` console script and ``python -m contact``; returns the
+    exit status."""
+    args = build_parser().parse_args(argv)
+    try:
+        return args.handler(args)
+    except (scenes.SceneError, UsageError) as exc:
+        _error(str(exc))
+        return EXIT_BAD_INPUT
+    except scenes.CaseError as exc:
+        _error(str(exc))
+        return EXIT_CASE_FAILED
+    except (contact.ContactInputError, sie.SIEInputError) as exc:
+        _error(f"{type(exc).__name__}: {exc}")
+        return EXIT_BAD_INPUT
+    except OSError as exc:                     # e.g. --out is not writable
+        _error(str(exc))
+        return EXIT_CASE_FAILED
+    except KeyboardInterrupt:
+        _error("interrupted")
+        return 130
+
+
+def _error(message: str):
+    print(f"contact: error: {message}", file=sys.stderr)
+
+
+# --------------------------------------------------------------------------
+# contact run
+# --------------------------------------------------------------------------
+def cmd_run(args) -> int:
+    scene = scenes.load_scene(args.scene) if args.scene else scenes.default_scene()
+    with _executor(args.jobs, args.scheduler) as executor:
+        result = scenes.run_scene(scene, executor=executor, progress=not args.quiet)
+    if not args.quiet:
+        print(scenes.format_table(result))
+    try:
+        written = scenes.write_outputs(result, args.out)
+    except OSError as exc:
+        raise OSError(f"cannot write the outputs into --out {args.out}: {exc}") from None
+    for message in result.warnings:
+        print(f"contact: warning: {message}", file=sys.stderr)
+    if not args.quiet:
+        print(f"  wrote {', '.join(str(p) for p in written)}")
+    return 0
+
+
+@contextlib.contextmanager
+def _executor(jobs: int, scheduler: str | None):
+    """None (serial), a process pool, or a Dask cluster's concurrent.futures executor."""
+    if scheduler is not None:
+        if jobs not in (0, 1):
+            raise UsageError("give --jobs or --scheduler, not both (the cluster decides how "
+                             "many workers run the sweep)")
+        with _dask_executor(scheduler) as ex:
+            yield ex
+        return
+    if jobs == 0:
+        jobs = os.cpu_count() or 1
+    if jobs == 1:
+        yield None
+        return
+    with ProcessPoolExecutor(max_workers=jobs) as ex:
+        yield ex
+
+
+@contextlib.contextmanager
+def _dask_executor(address: str):
+    try:
+        from distributed import Client
+    except ImportError:
+        raise UsageError("--scheduler needs Dask's distributed scheduler, which is an optional "
+                         "extra: pip install 'sie-contact[dask]'") from None
+    try:
+        client = Client(address, timeout="20s")
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise UsageError(f"--scheduler {address}: cannot connect to a Dask scheduler there "
+                         f"({type(exc).__name__}: {exc})") from None
+    with client:
+        yield client.get_executor(pure=False)
+
+
+# --------------------------------------------------------------------------
+# contact table1
+# --------------------------------------------------------------------------
+def cmd_table1(args) -> int:
+    if not 0 <= args.digits <= 17:
+        raise UsageError(f"--digits must be in [0, 17], got {args.digits}")
+    print(format_table1(contact.zhou2014(), args.digits))
+    return 0
+
+
+def format_table1(material, digits: int = 4) -> str:
+    """Table 1 of Zhou et al. 2014: the roots (eta1, -eta1, eta3, -eta3) of eq. (3.1) at the
+    paper's 14 speeds (|eta1| >= |eta3|; the paper's columns at c = 1 are in another order)."""
+    rows = [(f"{c:g}", *(_complex(z, digits) for z in material.characteristic_roots(c)))
+            for c in TABLE1_SPEEDS]
+    header = ("c", "eta1", "eta2 = -eta1", "eta3", "eta4 = -eta3")
+    widths = [max(len(h), *(len(r[k]) for r in rows)) for k, h in enumerate(header)]
+    lines = ["Table 1 (Zhou, Lee & Jang 2014): characteristic roots of eq. (3.1), "
+             "material C11, C12, C22, C33 = "
+             f"{material.C11:.10g}, {material.C12:.10g}, {material.C22:.10g}, {material.C33:.10g}",
+             "  ".join(h.rjust(w) for h, w in zip(header, widths))]
+    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    return "\n".join(lines)
+
+
+def _complex(z: complex, digits: int) -> str:
+    re, im = z.real + 0.0, z.imag + 0.0
+    if im == 0.0:
+        return f"{re:.{digits}f}"
+    if re == 0.0:
+        return f"{im:.{digits}f}i"
+    return f"{re:.{digits}f}{im:+.{digits}f}i"
+
+
+# --------------------------------------------------------------------------
+# contact constants
+# --------------------------------------------------------------------------
+def cmd_constants(args) -> int:
+    scene = scenes.load_scene(args.scene) if args.scene else None
+    material = scene.material.build() if scene else contact.zhou2014()
+    if args.speed is not None:
+        speeds = [args.speed]
+    elif scene is not None:
+        speeds = list(dict.fromkeys(case.speed for case in scene.cases()))
+    else:
+        raise UsageError("contact constants needs --speed C (or a scene whose [motion] gives "
+                         "the speeds)")
+    print(format_constants(material, speeds, scene.source if scene else "zhou2014 (default)"))
+    return 0
+
+
+def format_constants(material, speeds, source: str) -> str:
+    """N11, N12, N21, N22 (and eta1 eta2, eta1 + eta2) at each speed, and c_R."""
+    c_R = contact.rayleigh_speed(material)
+    header = ("c", "N11", "N12", "N21", "N22", "eta1*eta2", "eta1+eta2")
+    rows = []
+    for c in speeds:
+        k = contact.surface_constants(material, c)
+        rows.append((f"{c:g}", *(f"{v:.12g}" for v in (k.N11, k.N12, k.N21, k.N22,
+                                                        k.eta_product, k.eta_sum))))
+    widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(header)]
+    stiffness = ", ".join(f"{v:.10g}" for v in (material.C11, material.C12, material.C22,
+                                                material.C33))
+    lines = [f"Surface constants (dv/dX = N12 q + N11 Hc[p], sigma_XX = N21 p + N22 Hc[q]); "
+             f"material: {source} (C11, C12, C22, C33 = {stiffness}); N11, N12 in 1/(stress unit)",
+             f"Rayleigh speed c_R = {c_R!r} (admissible: 0 <= c < c_R)",
+             "  ".join(h.rjust(w) for h, w in zip(header, widths))]
+    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    return "\n".join(lines)

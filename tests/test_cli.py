@@ -1,0 +1,252 @@
+"""The ``contact`` command (contact.cli): the default scene end to end in a subprocess, the
+shape of result.json, serial = --jobs 2 = a Dask cluster, the helpers, and user errors that
+exit non-zero with a message and no traceback."""
+from __future__ import annotations
+
+import csv
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import contact
+from contact import cli
+from contact.scene import FIELDS, load_scene, run_scene
+
+SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def contact_command(*args, cwd):
+    """Run ``python -m contact ARGS`` in ``cwd``; the project is importable from anywhere."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    return subprocess.run([sys.executable, "-m", "contact", *args], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=300)
+
+
+def cases_of(path):
+    """The cases of a result.json, without the timing (which differs run to run)."""
+    return json.loads(Path(path).read_text())["cases"]
+
+
+# --------------------------------------------------------------------------
+# the default scene, end to end
+# --------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def default_run(tmp_path_factory):
+    cwd = tmp_path_factory.mktemp("default")
+    return contact_command("run", cwd=cwd), cwd
+
+
+def test_default_run_prints_the_table(default_run):
+    proc, _ = default_run
+    assert proc.returncode == 0, proc.stderr
+    assert "Traceback" not in proc.stderr
+    out = proc.stdout
+    for column in ("x_left", "x_right", "alpha", "beta", "max p (sampled)", "K_left", "K_right",
+                   "min sigma_xx", "max sigma_xx", "time ms", "c_R = 0.99361473"):
+        assert column in out, column
+    ref = contact.solve(contact.zhou2014(), contact.CylindricalPunch(100.0), load=0.01,
+                        speed=0.6, friction=0.3, direction=-1)
+    assert f"{ref.ends[0]:.10g}" in out and f"{ref.alpha:.8g}" in out
+
+
+def test_default_run_writes_into_contact_out(default_run):
+    _, cwd = default_run
+    out = cwd / "contact-out"
+    names = {p.name for p in out.iterdir()}
+    assert names == {"result.json", "pressure.csv", "sigma_xx.csv", "pressure.png",
+                     "sigma_xx.png"}
+    for png in ("pressure.png", "sigma_xx.png"):
+        assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert (out / png).stat().st_size > 10_000
+
+
+def test_result_json_shape(default_run):
+    _, cwd = default_run
+    result = json.loads((cwd / "contact-out" / "result.json").read_text())
+    assert list(result)[:4] == ["scene", "scene_file", "cases", "version"]
+    assert {"timing_s", "units", "warnings"} <= set(result)
+    assert result["version"] == "0.1.0" and result["timing_s"] > 0
+    assert "stress" in result["units"]["statement"]
+    echo = result["scene"]
+    assert echo["motion"] == {"load": 0.01, "speed": 0.6, "friction": 0.3, "direction": -1}
+    assert echo["punch"] == {"kind": "cylindrical", "radius": 100.0}
+    (case,) = result["cases"]
+    assert list(case) == ["inputs", "ends", "exponents", "pressure", "sigma_xx", "sif"]
+    assert case["inputs"] == {"speed": 0.6, "friction": 0.3, "direction": -1, "load": 0.01,
+                              "radius": 100.0}
+    for absent in set(FIELDS) - set(case):
+        assert absent in ("shear", "roots", "constants")
+    ref = contact.solve(contact.zhou2014(), contact.CylindricalPunch(100.0), load=0.01,
+                        speed=0.6, friction=0.3, direction=-1)
+    assert case["ends"] == list(ref.ends)
+    assert case["exponents"] == [ref.alpha, ref.beta]
+    assert case["sif"] == {}                      # both ends free: no singular end
+    X = np.linspace(-0.8, 0.8, 801)
+    for name in ("pressure", "sigma_xx"):
+        assert case[name]["x"] == X.tolist()
+        np.testing.assert_array_equal(case[name]["values"], getattr(ref, name)(X))
+    with open(cwd / "contact-out" / "pressure.csv") as fh:
+        rows = list(csv.reader(fh))
+    assert rows[0] == ["X", "pressure"] and len(rows) == 802
+    assert float(rows[401][1]) == case["pressure"]["values"][400]
+
+
+# --------------------------------------------------------------------------
+# sweeps: serial = --jobs 2 = a Dask cluster, in scene order
+# --------------------------------------------------------------------------
+SWEEP = SCENES / "fig1b_flat_friction.toml"
+
+
+@pytest.fixture(scope="module")
+def serial_sweep(tmp_path_factory):
+    cwd = tmp_path_factory.mktemp("serial")
+    proc = contact_command("run", str(SWEEP), "--out", "serial", "--quiet", cwd=cwd)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == ""                     # --quiet: no table, no list of files
+    return cases_of(cwd / "serial" / "result.json")
+
+
+def test_sweep_with_two_processes_equals_serial(serial_sweep, tmp_path):
+    proc = contact_command("run", str(SWEEP), "--out", "jobs2", "--jobs", "2", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    parallel = cases_of(tmp_path / "jobs2" / "result.json")
+    assert parallel == serial_sweep
+    assert [c["inputs"]["friction"] for c in parallel] == [0.0, 0.1, 0.3, 0.5]
+    header = (tmp_path / "jobs2" / "sigma_xx.csv").read_text().splitlines()[0]
+    assert header == "X,friction = 0,friction = 0.1,friction = 0.3,friction = 0.5"
+
+
+def test_sweep_on_a_dask_cluster_equals_serial(serial_sweep, tmp_path):
+    distributed = pytest.importorskip("distributed", reason="optional extra sie-contact[dask]")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        rc = cli.main(["run", str(SWEEP), "--out", str(tmp_path / "dask"), "--quiet",
+                       "--scheduler", cluster.scheduler_address])
+    assert rc == 0
+    assert cases_of(tmp_path / "dask" / "result.json") == serial_sweep
+
+
+def test_run_scene_through_an_executor_equals_serial():
+    from concurrent.futures import ThreadPoolExecutor
+    s = load_scene(SCENES / "fig2a_triangular_speed.toml")
+    serial = run_scene(s)
+    with ThreadPoolExecutor(max_workers=3) as ex:
+        threaded = run_scene(s, executor=ex)
+    assert [c.index for c in threaded.cases] == [0, 1, 2, 3]
+    for a, b in zip(serial.cases, threaded.cases):
+        assert a.entry["ends"] == b.entry["ends"]
+        np.testing.assert_array_equal(a.curve("sigma_xx")[1], b.curve("sigma_xx")[1])
+
+
+def test_scheduler_without_the_extra_says_how_to_install(monkeypatch, capsys, tmp_path):
+    monkeypatch.setitem(sys.modules, "distributed", None)     # import distributed fails
+    assert cli.main(["run", "--scheduler", "tcp://127.0.0.1:1", "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "sie-contact[dask]" in err and "Traceback" not in err
+
+
+def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
+    assert cli.main(["run", "--jobs", "2", "--scheduler", "x:1", "--out", str(tmp_path)]) == 2
+    assert "not both" in capsys.readouterr().err
+
+
+# --------------------------------------------------------------------------
+# progress bar
+# --------------------------------------------------------------------------
+def _slow(run_case, delay):
+    import time
+
+    def slow_run_case(case):
+        time.sleep(delay)
+        return run_case(case)
+    return slow_run_case
+
+
+def test_progress_bar_on_a_slow_sweep_and_quiet_turns_it_off(monkeypatch, capsys, tmp_path):
+    import contact.scene as scene_module
+    monkeypatch.setattr(scene_module, "run_case", _slow(scene_module.run_case, 0.45))
+    assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "a")]) == 0
+    assert "cases" in capsys.readouterr().err                 # tqdm's bar, after ~1 s
+    assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "b"), "--quiet"]) == 0
+    captured = capsys.readouterr()
+    assert captured.err == "" and captured.out == ""
+
+
+def test_no_progress_bar_on_a_fast_sweep(capsys, tmp_path):
+    run_scene(load_scene(SWEEP))                               # warm up
+    assert cli.main(["run", str(SWEEP), "--out", str(tmp_path)]) == 0
+    assert "cases" not in capsys.readouterr().err
+
+
+# --------------------------------------------------------------------------
+# helpers and user errors
+# --------------------------------------------------------------------------
+def test_help_lists_every_command(tmp_path):
+    proc = contact_command("--help", cwd=tmp_path)
+    assert proc.returncode == 0
+    for command in ("run", "table1", "constants"):
+        assert command in proc.stdout
+    run_help = contact_command("run", "--help", cwd=tmp_path).stdout
+    for option in ("--out", "--jobs", "--quiet", "--scheduler"):
+        assert option in run_help
+
+
+def test_console_script_is_installed(tmp_path):
+    script = Path(sys.executable).with_name("contact")
+    if not script.exists():
+        pytest.skip("the console script is installed by `pip install -e .` (make does it)")
+    proc = subprocess.run([str(script), "--help"], capture_output=True, text=True, cwd=tmp_path)
+    assert proc.returncode == 0 and "table1" in proc.stdout
+
+
+def test_table1(capsys):
+    assert cli.main(["table1"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    rows = out[2:]
+    assert len(rows) == 14
+    assert rows[0].split() == ["0", "5.2506", "-5.2506", "0.6120", "-0.6120"]
+    assert rows[11].split() == ["1.5", "5.0359", "-5.0359", "0.6852i", "-0.6852i"]
+    assert rows[13].split() == ["10", "8.5829i", "-8.5829i", "5.8365i", "-5.8365i"]
+
+
+def test_constants(capsys):
+    assert cli.main(["constants", "--speed", "0.6"]) == 0
+    out = capsys.readouterr().out
+    k = contact.surface_constants(contact.zhou2014(), 0.6)
+    assert f"{k.N11:.12g}" in out and f"{k.N22:.12g}" in out
+    assert "c_R = 0.9936147317" in out
+    assert cli.main(["constants", str(SCENES / "fig4a_cylindrical_speed.toml")]) == 0
+    rows = capsys.readouterr().out.splitlines()[3:]
+    assert [r.split()[0] for r in rows] == ["0", "0.3", "0.6", "0.9"]
+
+
+def test_constants_at_or_above_rayleigh_is_a_message(capsys):
+    assert cli.main(["constants", "--speed", "0.999"]) == 2
+    err = capsys.readouterr().err
+    assert "c_R = 0.99361473" in err and "Traceback" not in err
+    assert cli.main(["constants"]) == 2
+    assert "--speed" in capsys.readouterr().err
+
+
+def test_bad_scene_in_a_subprocess_exits_2_without_traceback(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[material]\npreset = "zhou2014"\n[punch]\nkind = "flat"\nhalf_width = 1.0\n'
+                   "[motion]\nload = 0.01\nsped = 0.3\n")
+    proc = contact_command("run", str(bad), cwd=tmp_path)
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == (
+        f"contact: error: {bad}: motion.sped: unknown key; did you mean 'speed'? "
+        "(allowed: load, speed, velocity, friction, direction)")
+    assert proc.stdout == "" and not (tmp_path / "contact-out").exists()
+    broken = tmp_path / "broken.toml"
+    broken.write_text("[motion]\nload = 0.01\nspeed = [0.3,\n")
+    proc = contact_command("run", str(broken), cwd=tmp_path)
+    assert proc.returncode == 2 and "TOML syntax error" in proc.stderr
+    assert "Traceback" not in proc.stderr
