@@ -11,6 +11,9 @@ solvability condition of the index -1 equation, eq. (5.40)).
 the equation is one too, its Jacobi projection is exact with a few terms, and the solver
 uses a small fixed n instead of doubling n until two solutions agree.
 
+``convex`` (a nondecreasing slope) means the gap outside a contact with p >= 0 opens by
+itself, so the solver skips its numerical gap check.
+
 ``homogeneous`` records an exact scaling law when the slope has one,
 slope(x0 + lam xi) = lam^d slope(x0 + xi): the solver then finds the contact size with one
 solve instead of a root search (the load scales like size^(d+1)).  It is a statement about the
@@ -47,6 +50,7 @@ class Punch:
     breaks: tuple = ()
     homogeneous: Optional[tuple] = None      # (x0, d): slope(x0 + lam xi) = lam^d slope(x0 + xi)
     slope_degree: Optional[int] = None       # the slope is a polynomial of this degree
+    convex: bool = False                     # slope nondecreasing: the gap opens by itself
     kind: str = "profile"
 
     def _slope(self, X):                      # pragma: no cover - abstract
@@ -87,6 +91,7 @@ class FlatPunch(Punch):
     """Flat-ended punch of half-width a: contact [-a, a], sharp corners at both ends
     (index 1; Zhou et al. 2014, Sec. 5.1)."""
     kind = "flat"
+    convex = True
     slope_degree = 0
 
     def __init__(self, half_width):
@@ -104,6 +109,7 @@ class TriangularPunch(Punch):
     """Wedge face v = -v0 + m0 X, sharp corner at X = 0, contact [0, b] (index 0;
     Zhou et al. 2014, Sec. 5.2).  ``slope`` is m0 > 0."""
     kind = "triangular"
+    convex = True
     slope_degree = 0
     corners = (0.0, None)
     homogeneous = (0.0, 0)
@@ -122,6 +128,7 @@ class ParabolicPunch(Punch):
     """Face v = -v0 + X^2/(2R) on [0, b], sharp corner at X = 0 (index 0;
     Zhou et al. 2014, Sec. 5.3)."""
     kind = "parabolic"
+    convex = True
     slope_degree = 1
     corners = (0.0, None)
     homogeneous = (0.0, 1)
@@ -140,6 +147,7 @@ class CylindricalPunch(Punch):
     """Face v = -v0 + X^2/(2R) (a + b << R), both contact ends free (index -1;
     Zhou et al. 2014, Sec. 5.4)."""
     kind = "cylindrical"
+    convex = True
     slope_degree = 1
     corners = (None, None)
     homogeneous = (0.0, 1)

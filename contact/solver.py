@@ -74,7 +74,6 @@ class ContactResult:
     beta: float
     kappa: int
     n: int
-    residual: float
     load_check: float
     constants: SurfaceConstants
     load: float
@@ -86,6 +85,15 @@ class ContactResult:
     method: str = "numeric"
     solution: object = field(default=None, repr=False)
     _sif: dict | None = field(default=None, repr=False)
+    _residual: float | None = field(default=None, repr=False)
+
+    @property
+    def residual(self) -> float:
+        """max |N12 mu_f p + N11 Hc[p] - v'| at 64 Chebyshev points of the contact, relative
+        to max |v'| (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
+        if self._residual is None:
+            self._residual = _residual_of(self)
+        return self._residual
 
     @property
     def sif(self) -> dict:
@@ -396,13 +404,16 @@ def _two_free_ends(prob: _Problem, hint=None):
 # --------------------------------------------------------------------------
 # checks and derived quantities
 # --------------------------------------------------------------------------
-def _residual(sol, prob, xl, xr):
+def _residual_of(res):
     """Relative max residual of the dominant equation at 64 Chebyshev points."""
+    if res.method == "closed_form":
+        return 0.0
+    sol = res.solution
     s = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
-    h, m = 0.5 * (xr - xl), 0.5 * (xr + xl)
-    f = prob.punch.slope(h * s + m)
-    lhs = prob.a * sol(s) + prob.b * sol.cauchy(s)
-    scale = max(np.max(np.abs(f)), np.max(np.abs(prob.b * sol.cauchy(s))), np.finfo(float).tiny)
+    f = res.punch.slope(res.half_width * s + res.center)
+    hc = res.constants.N11 * sol.cauchy(s)
+    lhs = res.constants.N12 * res.mu_f * sol(s) + hc
+    scale = max(np.max(np.abs(f)), np.max(np.abs(hc)), np.finfo(float).tiny)
     return float(np.max(np.abs(lhs - f)) / scale)
 
 
@@ -556,11 +567,11 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     _check_positive_pressure(sol, xl, xr)
     res = ContactResult(
         ends=(float(xl), float(xr)), alpha=sol.alpha, beta=sol.beta, kappa=sol.kappa, n=sol.n,
-        residual=_residual(sol, prob, xl, xr), load_check=abs(h * sol.integral() - load) / load,
+        load_check=abs(h * sol.integral() - load) / load,
         constants=const, load=load, speed=float(speed),
         friction=friction, direction=direction, mu_f=mu_f, punch=punch, method="numeric",
         solution=sol)
-    if punch.kappa < 1:
+    if punch.kappa < 1 and not punch.convex:
         _check_gap(res, prob)
     return res
 
@@ -598,7 +609,7 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
             f'CylindricalPunch; use method="numeric" for {type(punch).__name__}')
     return _ClosedFormContactResult(
         ends=tuple(float(x) for x in c.ends), alpha=c.alpha, beta=c.beta, kappa=c.kappa, n=2,
-        residual=0.0, load_check=c.load_check, constants=const, load=load,
+        load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
         method="closed_form", solution=c, _sif=dict(c.sif))
 
