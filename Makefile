@@ -6,7 +6,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: run test bench clean venv
+.PHONY: run test bench report clean venv
 
 venv: $(STAMP)
 
@@ -27,6 +27,10 @@ bench: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[bench]"
 	$(PY) -m validation.bench_sie
 	$(PY) -m validation.bench_contact
+
+report: $(STAMP)
+	$(PY) -m pip install --quiet -e ".[report]"
+	$(PY) -m validation.report
 
 clean:
 	rm -rf $(VENV) build *.egg-info validation/out contact-out
