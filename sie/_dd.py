@@ -14,14 +14,14 @@ from ._jit import jit
 _SPLIT = 134217729.0  # 2^27 + 1
 
 
-@jit(inline="always")
+@jit()
 def two_sum(a, b):
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-@jit(inline="always")
+@jit()
 def two_prod(a, b):
     p = a * b
     t = _SPLIT * a
@@ -33,21 +33,21 @@ def two_prod(a, b):
     return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-@jit(inline="always")
+@jit()
 def dd_add(ah, al, bh, bl):
     s, e = two_sum(ah, bh)
     e += al + bl
     return two_sum(s, e)
 
 
-@jit(inline="always")
+@jit()
 def dd_mul(ah, al, bh, bl):
     p, e = two_prod(ah, bh)
     e += ah * bl + al * bh
     return two_sum(p, e)
 
 
-@jit(inline="always")
+@jit()
 def dd_div(ah, al, bh, bl):
     q1 = ah / bh
     ph, pl = dd_mul(bh, bl, q1, 0.0)

@@ -89,17 +89,16 @@ def _project(v, a, b, x, n):
     return out
 
 
-@jit()
 def _norm_ratios(n, a, b, h1):
-    """h_k for k = 1..n-1 from h_1 by h_{k+1}/h_k (DLMF Table 18.3.1)."""
-    h = np.empty(n)
-    h[0] = 0.0
+    """h_k for k = 1..n-1 from h_1 by h_{k+1}/h_k (DLMF Table 18.3.1); a cumulative
+    product in numpy (no compiled kernel needed)."""
+    h = np.zeros(n)
     if n > 1:
-        h[1] = h1
-    for k in range(1, n - 1):
+        k = np.arange(1, n - 1, dtype=float)
         s = 2.0 * k + a + b
-        h[k + 1] = h[k] * (s + 1.0) * (k + a + 1.0) * (k + b + 1.0) / (
-            (s + 3.0) * (k + a + b + 1.0) * (k + 1.0))
+        ratio = (s + 1.0) * (k + a + 1.0) * (k + b + 1.0) / ((s + 3.0) * (k + a + b + 1.0) * (k + 1.0))
+        h[1] = h1
+        h[2:] = h1 * np.cumprod(ratio)
     return h
 
 
