@@ -375,7 +375,7 @@ def _two_free_ends(prob: _Problem, hint=None):
     else:
         m0 = 0.5 * (min(punch.breaks) + max(punch.breaks)) if punch.breaks else 0.0
         track = _CenterTracker(prob, m0)
-        track.xtol_rel = 1e-4       # bracketing needs the load's sign only
+        track.xtol_rel = 1e-3       # bracketing needs the sign of load - P only
         h = 0.5 * _length_scale(punch, m0)
         for _ in range(_MAX_BRACKET_STEPS):          # up: a contact that carries 4P
             if load_at(h) >= 4.0 * prob.load:

@@ -74,20 +74,32 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
     big = ((his - los) > 0.2 * gap) | (los == -1.0) | (his == 1.0)
     counts = np.where(big, q, q_small + np.ceil(q * (his - los) / gap).astype(int)) + shift
     xs, ws = [], []
-    for lo, hi, qq in zip(los, his, counts):
+    for qq in np.unique(counts):                 # all pieces with the same node count at once
+        sel = counts == qq
+        lo, hi = los[sel], his[sel]
         half = 0.5 * (hi - lo)
-        ea = alpha if hi == 1.0 else 0.0
-        eb = beta if lo == -1.0 else 0.0
-        u, wu = _gauss_cached(int(qq), ea, eb)
-        x = lo + half * (u + 1.0)
-        w = wu * half ** (1.0 + ea + eb)
-        if hi != 1.0:
-            w = w * (1.0 - x) ** alpha
-        if lo != -1.0:
-            w = w * (1.0 + x) ** beta
-        xs.append(x)
-        ws.append(w)
-    return np.concatenate(xs), np.concatenate(ws)
+        inner = (lo != -1.0) & (hi != 1.0)
+        if inner.any():                          # Gauss-Legendre times the smooth weight
+            u, wu = _gauss_cached(int(qq), 0.0, 0.0)
+            x = lo[inner, None] + half[inner, None] * (u + 1.0)
+            w = (half[inner, None] * wu) * (1.0 - x) ** alpha * (1.0 + x) ** beta
+            xs.append(x.ravel())
+            ws.append(w.ravel())
+        for i in np.flatnonzero(~inner):         # an end piece: its end's Jacobi weight
+            ea = alpha if hi[i] == 1.0 else 0.0
+            eb = beta if lo[i] == -1.0 else 0.0
+            u, wu = _gauss_cached(int(qq), ea, eb)
+            x = lo[i] + half[i] * (u + 1.0)
+            w = wu * half[i] ** (1.0 + ea + eb)
+            if hi[i] != 1.0:
+                w = w * (1.0 - x) ** alpha
+            if lo[i] != -1.0:
+                w = w * (1.0 + x) ** beta
+            xs.append(x)
+            ws.append(w)
+    x, w = np.concatenate(xs), np.concatenate(ws)
+    order = np.argsort(x, kind="stable")
+    return x[order], w[order]
 
 
 def _end_grading(breaks):
