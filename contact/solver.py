@@ -165,6 +165,7 @@ class _Problem:
     b: float            # N11
     load: float
     n: int
+    _rule: object = field(default=None, repr=False)
 
     @property
     def left(self):
@@ -198,9 +199,21 @@ class _Problem:
                               total=total, breaks=br)
 
     def functionals_on(self, xl, xr):
-        """(load carried, solvability residual) on [xl, xr], without forming the solution."""
+        """(load carried, solvability residual) on [xl, xr], without forming the solution
+        (a prepared Gauss rule when no break falls inside the trial contact)."""
         h, f, br = self._equation(xl, xr)
-        fun = self._call_sie(lambda **kw: sie.dominant_functionals(f, **kw), n=self.n, breaks=br)
+        if br:
+            fun = self._call_sie(lambda **kw: sie.dominant_functionals(f, **kw), n=self.n,
+                                 breaks=br)
+        else:
+            if self._rule is None:
+                self._rule = self._call_sie(lambda **kw: sie.FunctionalsRule(**kw), n=self.n)
+            try:
+                fun = self._rule(f)
+            except CallableOutputError as exc:
+                if isinstance(exc.__cause__, ContactInputError):
+                    raise exc.__cause__ from None
+                raise
         return h * fun.integral, fun.consistency
 
     def load_on(self, xl, xr):

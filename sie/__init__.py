@@ -11,12 +11,13 @@ from .errors import (CallableOutputError, EvaluationPointError, InvalidBreakpoin
                      InvalidOrderError, SideConditionError, SIEInputError)
 from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_series
-from .solver import Exponents, Functionals, Solution, dominant_functionals, sie_exponents, solve
+from .solver import (Exponents, Functionals, FunctionalsRule, Solution, dominant_functionals,
+                     sie_exponents, solve)
 from .special import jacobi_moment
 
 __all__ = [
     "gauss_jacobi", "solve", "Solution", "sie_exponents", "Exponents",
-    "dominant_functionals", "Functionals",
+    "dominant_functionals", "Functionals", "FunctionalsRule",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",

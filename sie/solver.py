@@ -41,7 +41,7 @@ from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
 from .special import jacobi_end_values, jacobi_moment_shifted
 
-__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals", "Functionals"]
+__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals", "Functionals", "FunctionalsRule"]
 
 END_CHOICES = ("bounded", "singular")
 _EXTRA_PER_PIECE = 24       # extra nodes per piece of the composite rule (breaks)
@@ -483,7 +483,7 @@ def _check_equation(f, a, b, left, right):
     for name, v in (("left", left), ("right", right)):
         if v not in END_CHOICES:
             raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
-    if not callable(f):
+    if f is not None and not callable(f):
         raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
     return a, b, sie_exponents(a, b, left, right)
 
@@ -557,6 +557,52 @@ def dominant_functionals(f, *, a, b, n, left, right, breaks=()):
     if kappa == 0:
         return Functionals(float(mu0 * fhat[0] / lam), None, e.alpha, e.beta, 0)
     return Functionals(float(mu0 * fhat[1] / lam), float(fhat[0]), e.alpha, e.beta, -1)
+
+
+class FunctionalsRule:
+    """:func:`dominant_functionals` prepared once for fixed a, b, n and ends (no breaks).
+
+    The Gauss rule, the norms and the end correction are built here; each call then costs
+    one evaluation of f at the fixed nodes and two dot products.  For searches that try
+    many right-hand sides of one equation (free contact ends).  ``rule(f)`` returns the same
+    :class:`Functionals` as ``dominant_functionals(f, a=..., b=..., n=..., left=..., right=...)``.
+    """
+
+    def __init__(self, *, a, b, n, left, right):
+        a, b, e = _check_equation(None, a, b, left, right)
+        n = check_order(n, 2 if e.kappa == 1 else 1)
+        self.a, self.b, self.n, self.exponents = a, b, n, e
+        self.kappa = e.kappa
+        if self.kappa == 1:
+            return
+        m_eq = n - self.kappa
+        rule = _WeightedRule.build(m_eq, -e.alpha, -e.beta, e.alpha_m1, e.beta_m1)
+        h = jacobi_norms(2, -e.alpha, -e.beta)
+        h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
+        x = rule.x
+        p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)   # P_1^{(-alpha,-beta)}
+        p_end = rule.end_values(2) if rule.end else np.zeros(2)
+        self.nodes = x
+        self.end = rule.end
+        self._w = (rule.omega / h[0], rule.omega * p1 / h[1])
+        self._w_end = (rule.corr * p_end[0] / h[0], rule.corr * p_end[1] / h[1])
+        self._scale = jacobi_moment_shifted(e.alpha_p1, e.beta_p1) / _lambda(e, b)
+
+    def __call__(self, f) -> Functionals:
+        e = self.exponents
+        if self.kappa == 1:
+            return Functionals(None, None, e.alpha, e.beta, 1)
+        if not callable(f):
+            raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+        fs = _call_checked(f, "f", (self.nodes,), self.nodes.shape)
+        f_end = 0.0
+        if self.end:
+            f_end = float(_call_checked(f, "f", (np.array([float(self.end)]),), (1,))[0])
+        f0 = float(self._w[0] @ fs + self._w_end[0] * f_end)
+        if self.kappa == 0:
+            return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
+        f1 = float(self._w[1] @ fs + self._w_end[1] * f_end)
+        return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
 
 
 # --------------------------------------------------------------------------

@@ -35,3 +35,24 @@ def test_functionals_validate_like_solve():
         sie.dominant_functionals(np.cos, a=0.3, b=0.0, n=8, left="bounded", right="bounded")
     with pytest.raises(sie.CallableOutputError):
         sie.dominant_functionals(lambda s: s[:2], a=0.3, b=1.0, n=8, left="bounded", right="bounded")
+
+
+@pytest.mark.parametrize("left,right", [("singular", "bounded"), ("bounded", "singular"),
+                                        ("bounded", "bounded"), ("singular", "singular")])
+@pytest.mark.parametrize("a,b", [(0.7, 1.0), (-3.0, -2.0), (-1e8, 1.0), (1e8, 1.0)])
+def test_prepared_rule_equals_dominant_functionals(left, right, a, b):
+    """FunctionalsRule (built once) returns what dominant_functionals computes per call,
+    including the end-mass correction at a/b = +-1e8."""
+    rule = sie.FunctionalsRule(a=a, b=b, n=16, left=left, right=right)
+    for f in (F[0], lambda s: 0.3 * s ** 3 - s + 2.0):
+        want = sie.dominant_functionals(f, a=a, b=b, n=16, left=left, right=right)
+        got = rule(f)
+        assert got.kappa == want.kappa
+        if want.integral is None:
+            assert got.integral is None
+        else:
+            assert got.integral == pytest.approx(want.integral, rel=1e-13, abs=1e-300)
+        if want.consistency is None:
+            assert got.consistency is None
+        else:
+            assert got.consistency == pytest.approx(want.consistency, rel=1e-12, abs=1e-15)
