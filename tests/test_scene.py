@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import contact
+import contact.result
 import contact.solver
 from contact import cli
 from contact.scene import (CURVE_FIELDS, DEFAULT_SCENE_TOML, CaseError, SceneError,
@@ -419,7 +420,7 @@ def test_solver_shares_surface_constants_across_a_sweep(monkeypatch):
 
 
 def test_solver_skips_sif_when_not_requested(monkeypatch):
-    calls = counter(monkeypatch, contact.solver, "_sif")
+    calls = counter(monkeypatch, contact.result, "_sif")
     run_scene(sweep_scene('kind = "flat"\nhalf_width = 1.0', ["ends"]))
     assert len(calls) == 0
 
