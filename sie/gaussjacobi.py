@@ -398,7 +398,11 @@ def _boundary_nodes(n, a, b, theta0):
 
 def _half_small(n, a, b, theta0):
     """Rung 2 for one half: Newton on the recurrence from given starting angles,
-    the N_BOUNDARY nodes nearest the end by the dd series (as on rung 3)."""
+    the N_BOUNDARY nodes nearest the end by the dd series (as on rung 3).  When every node
+    of this half is a boundary node, the recurrence pass is skipped: the Golub-Welsch
+    angles are close enough for the dd Newton iteration."""
+    if theta0.size <= N_BOUNDARY:
+        return _boundary_nodes(n, a, b, np.array(theta0, dtype=float))
     th, q = _newton_recurrence(n, a, b, theta0, *_reinsch_coefficients(n, a, b))
     w = _weights_from_recurrence(n, a, b, th, q)
     nb = min(N_BOUNDARY, th.size)
