@@ -284,8 +284,8 @@ def _two_free_ends(prob: _Problem, hint=None):
     track.m = track(hi)
     m0 = track(h0)
     polished = _newton_polish(prob, m0, h0)
-    if polished is not None:
-        return polished
+    if polished is not None and lo <= 0.5 * (polished[1] - polished[0]) <= hi:
+        return polished                  # (a root outside the bracket would be another branch)
     track.xtol_rel = 1e-14
     memo.clear()
     track.m = track(hi)
