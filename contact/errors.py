@@ -5,7 +5,7 @@ value received and what is allowed.
 """
 from __future__ import annotations
 
-import math
+from sie.errors import check_finite_real
 
 __all__ = [
     "ContactInputError",
@@ -64,11 +64,6 @@ class NearRayleighWarning(UserWarning):
 
 
 def check_finite(name: str, value, error=ContactInputError) -> float:
-    """Return ``value`` as a float, or raise ``error`` naming ``name`` if it is not a finite real."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise error(f"{name} must be a finite real number, got {value!r}") from None
-    if not math.isfinite(v):
-        raise error(f"{name} must be a finite real number, got {v!r}")
-    return v
+    """Return ``value`` as a float, or raise ``error`` naming ``name`` if it is not a finite real
+    (:func:`sie.errors.check_finite_real`, with the contact layer's base error as default)."""
+    return check_finite_real(name, value, error)

@@ -124,42 +124,34 @@ class TriangularPunch(Punch):
         return f"TriangularPunch(slope={self.m0!r})"
 
 
-class ParabolicPunch(Punch):
+class _ParabolicFace(Punch):
+    """Face v = -v0 + X^2/(2R): slope X/R, convex, homogeneous of degree 1 about X = 0."""
+    convex = True
+    slope_degree = 1
+    homogeneous = (0.0, 1)
+
+    def __init__(self, radius):
+        self.radius = _positive("radius", radius)
+
+    def _slope(self, X):
+        return X / self.radius
+
+    def __repr__(self):
+        return f"{type(self).__name__}(radius={self.radius!r})"
+
+
+class ParabolicPunch(_ParabolicFace):
     """Face v = -v0 + X^2/(2R) on [0, b], sharp corner at X = 0 (index 0;
     Zhou et al. 2014, Sec. 5.3)."""
     kind = "parabolic"
-    convex = True
-    slope_degree = 1
     corners = (0.0, None)
-    homogeneous = (0.0, 1)
-
-    def __init__(self, radius):
-        self.radius = _positive("radius", radius)
-
-    def _slope(self, X):
-        return X / self.radius
-
-    def __repr__(self):
-        return f"ParabolicPunch(radius={self.radius!r})"
 
 
-class CylindricalPunch(Punch):
+class CylindricalPunch(_ParabolicFace):
     """Face v = -v0 + X^2/(2R) (a + b << R), both contact ends free (index -1;
     Zhou et al. 2014, Sec. 5.4)."""
     kind = "cylindrical"
-    convex = True
-    slope_degree = 1
     corners = (None, None)
-    homogeneous = (0.0, 1)
-
-    def __init__(self, radius):
-        self.radius = _positive("radius", radius)
-
-    def _slope(self, X):
-        return X / self.radius
-
-    def __repr__(self):
-        return f"CylindricalPunch(radius={self.radius!r})"
 
 
 class ProfilePunch(Punch):

@@ -131,7 +131,7 @@ class InversionRemainder:
 
     @classmethod
     def build(cls, sol, f, kernel, breaks, s, ws, fs, fhat, kc, lam):
-        from .solver import _composite_rule, _call_checked
+        from .solver import _call_checked
         alpha, beta = sol.alpha, sol.beta
         g_coef = fhat - (kc if kc is not None else 0.0)
         t_k = w_k = phi_k = None
@@ -209,12 +209,6 @@ class InversionRemainder:
 
     def phi(self, x):
         return self._phi_no_const(x) + self.const
-
-    def integral(self):
-        if self.sol.kappa == 1:
-            return 0.0
-        tw, ww = self.w_rule
-        return float(ww @ self.phi(tw))
 
     def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
