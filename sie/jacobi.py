@@ -1,5 +1,5 @@
 """Jacobi polynomials P_k^{(a,b)}: series evaluation, Vandermonde matrices,
-discrete projections and norms (numba kernels + thin wrappers).
+discrete projections and norms (one numba kernel + thin wrappers).
 
 Standard normalisation throughout (as ``scipy.special.eval_jacobi``):
 P_k(1) = (a+1)_k / k!, recurrence DLMF 18.9.1-2, norms DLMF Table 18.3.1.
@@ -16,44 +16,17 @@ from .special import jacobi_norm
 __all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms"]
 
 
-@jit(inline="always")
-def _step(k, a, b):
-    """Coefficients of P_{k+1} = (A x + B) P_k - C P_{k-1}, k >= 1 (DLMF 18.9.2)."""
-    s = 2.0 * k + a + b
-    d = 2.0 * (k + 1) * (k + a + b + 1.0) * s
-    A = (s + 1.0) * (s + 2.0) * s / d
-    B = (s + 1.0) * (a * a - b * b) / d
-    C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
-    return A, B, C
-
-
-@jit()
-def _series(c, a, b, x):
-    """sum_k c_k P_k^{(a,b)}(x_i) by forward recurrence (O(len(c)) per point)."""
-    n = c.shape[0]
-    out = np.zeros(x.shape[0])
-    if n == 0:
-        return out
-    for i in range(x.shape[0]):
-        xi = x[i]
-        p_prev = 1.0
-        acc = c[0]
-        if n > 1:
-            p = (a + 1.0) + 0.5 * (a + b + 2.0) * (xi - 1.0)
-            acc += c[1] * p
-            for k in range(1, n - 1):
-                A, B, C = _step(k, a, b)
-                nxt = (A * xi + B) * p - C * p_prev
-                p_prev = p
-                p = nxt
-                acc += c[k + 1] * p
-        out[i] = acc
-    return out
-
-
 @jit()
 def _vandermonde(n, a, b, x):
-    """V[i, k] = P_k^{(a,b)}(x_i), k < n."""
+    """V[i, k] = P_k^{(a,b)}(x_i), k < n, by the recurrence DLMF 18.9.1-2:
+    P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1},  s = 2k + a + b,
+    A_k = (s+1)(s+2)s/d,  B_k = (s+1)(a^2-b^2)/d,  C_k = 2(k+a)(k+b)(s+2)/d,
+    d = 2(k+1)(k+a+b+1)s.
+
+    The only compiled kernel of this module: series and projections are BLAS
+    products with blocks of V (see ``_BLOCK``), which keeps the number of kernels a
+    first call must compile small (each costs ~0.2 s).
+    """
     m = x.shape[0]
     V = np.empty((m, n))
     for i in range(m):
@@ -62,31 +35,23 @@ def _vandermonde(n, a, b, x):
         for i in range(m):
             V[i, 1] = (a + 1.0) + 0.5 * (a + b + 2.0) * (x[i] - 1.0)
         for k in range(1, n - 1):
-            A, B, C = _step(k, a, b)
+            s = 2.0 * k + a + b
+            d = 2.0 * (k + 1) * (k + a + b + 1.0) * s
+            A = (s + 1.0) * (s + 2.0) * s / d
+            B = (s + 1.0) * (a * a - b * b) / d
+            C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
             for i in range(m):
                 V[i, k + 1] = (A * x[i] + B) * V[i, k] - C * V[i, k - 1]
     return V
 
 
-@jit()
-def _project(v, a, b, x, n):
-    """out[k] = sum_i v_i P_k^{(a,b)}(x_i), k < n, in O(n) memory."""
-    out = np.zeros(n)
-    for i in range(x.shape[0]):
-        xi = x[i]
-        vi = v[i]
-        p_prev = 1.0
-        out[0] += vi
-        if n > 1:
-            p = (a + 1.0) + 0.5 * (a + b + 2.0) * (xi - 1.0)
-            out[1] += vi * p
-            for k in range(1, n - 1):
-                A, B, C = _step(k, a, b)
-                nxt = (A * xi + B) * p - C * p_prev
-                p_prev = p
-                p = nxt
-                out[k + 1] += vi * p
-    return out
+_BLOCK = 1 << 16  # entries of one Vandermonde block (512 KiB): memory stays O(n) per point
+
+
+def _blocks(n, m):
+    """Row slices of an m-by-n Vandermonde matrix, each at most ``_BLOCK`` entries."""
+    rows = max(1, _BLOCK // max(n, 1))
+    return (slice(i, min(i + rows, m)) for i in range(0, m, rows))
 
 
 def _norm_ratios(n, a, b, h1):
@@ -112,7 +77,13 @@ def _f64(x):
 def jacobi_series(c, a, b, x):
     """Evaluate sum_k c[k] P_k^{(a,b)}(x) at the points x (any real x)."""
     x = np.asarray(x, dtype=float)
-    return _series(_f64(c), float(a), float(b), _f64(x.ravel())).reshape(x.shape)
+    c = _f64(c)
+    xf = _f64(x.ravel())
+    out = np.zeros(xf.size)
+    if c.size:
+        for rows in _blocks(c.size, xf.size):
+            out[rows] = _vandermonde(c.size, float(a), float(b), xf[rows]) @ c
+    return out.reshape(x.shape)
 
 
 def jacobi_vandermonde(n, a, b, x):
@@ -121,8 +92,15 @@ def jacobi_vandermonde(n, a, b, x):
 
 
 def jacobi_project(v, a, b, x, n):
-    """Vector sum_i v_i P_k^{(a,b)}(x_i), k = 0..n-1 (no n-by-len(x) matrix is formed)."""
-    return _project(_f64(v), float(a), float(b), _f64(x), int(n))
+    """Vector sum_i v_i P_k^{(a,b)}(x_i), k = 0..n-1 (in blocks: no n-by-len(x) matrix)."""
+    v = _f64(v)
+    x = _f64(x)
+    n = int(n)
+    out = np.zeros(n)
+    if n:
+        for rows in _blocks(n, x.size):
+            out += v[rows] @ _vandermonde(n, float(a), float(b), x[rows])
+    return out
 
 
 def jacobi_norms(n, a, b):
