@@ -13,16 +13,18 @@ Dispatch ladder (read top to bottom)
 1. n == 1                              closed form.
 2. n <= 100, or max(alpha, beta) > 5   Newton in theta on the three-term
                                        recurrence (O(n^2)), started from
-                                       Golub-Welsch eigenvalues (O(n^2)).
+                                       Golub-Welsch eigenvalues (LAPACK dsterf,
+                                       O(n^2)).
 3. otherwise (n > 100)                 Hale & Townsend (2013): Newton in theta
                                        on Hahn's interior asymptotic expansion
                                        (O(1) per node), started from the
-                                       Gatteschi-Pittaluga (1985) estimates;
-                                       the ``N_BOUNDARY`` nodes nearest each end
-                                       (where the expansion is not accurate)
-                                       by Newton on the recurrence, written in
-                                       t = 1 - x so that it keeps relative
-                                       precision (O(n) per node, O(n) overall).
+                                       Gatteschi-Pittaluga (1985) estimates.
+On rungs 2 and 3 the ``N_BOUNDARY`` nodes nearest each end (where the expansion
+is not accurate, and where the recurrence loses relative accuracy in the weights
+for exponents near -1) are finished by Newton on the terminating hypergeometric
+series at that end, summed in double-double in t = 1 - x so that it keeps
+relative precision (O(1) terms per node: O(n) overall).  For n <= 2 N_BOUNDARY
+the Golub-Welsch angles go straight to that series.
 
 Nodes with x >= 0 are computed with (alpha, beta) and theta measured from
 x = 1; nodes with x < 0 by the reflection P_n^{(a,b)}(-x) = (-1)^n P_n^{(b,a)}(x)
@@ -70,21 +72,8 @@ _NEWTON_MAX = 12
 # to x = 1 (measured: 4e-11 in the first root angle at n = 1000, alpha = -0.99),
 # this form does not.  (Reinsch's modification, cf. Oliver, Numer. Math. 1977.)
 # --------------------------------------------------------------------------
-def _reinsch_coefficients(n, a, b):
-    """Bt_k, Ct_k for k = 1..n-1 (see the block comment above); numpy, not numba: one
-    compiled kernel fewer on the first-call path (~0.25 s of compile time)."""
-    k = np.arange(n, dtype=float)
-    s = 2.0 * k + a + b
-    Bt = np.zeros(n)
-    Ct = np.zeros(n)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        Bt[1:] = ((s + 1.0) * (s + 2.0) / (2.0 * (k + a + b + 1.0) * (k + a + 1.0)))[1:]
-        Ct[1:] = (k * (k + b) * (s + 2.0) / ((k + a + b + 1.0) * s * (k + a + 1.0)))[1:]
-    return Bt, Ct
-
-
 @jit()
-def _newton_recurrence(n, a, b, theta, Bt, Ct):
+def _newton_recurrence(n, a, b, theta):
     """Newton in theta on P_n^{(a,b)}(cos theta) via the recurrence in t = 2 sin^2(theta/2).
 
     Returns the refined angles and Q_{n-1} = P_{n-1}/P_{n-1}(1) at them.
@@ -101,6 +90,13 @@ def _newton_recurrence(n, a, b, theta, Bt, Ct):
     kernel with scalar loops, no array expressions: numba compiles it ~4x faster than
     a separate recurrence kernel written with array arithmetic.)
     """
+    # Bt_k, Ct_k of the block comment above, k = 1..n-1
+    Bt = np.empty(n)
+    Ct = np.empty(n)
+    for k in range(1, n):
+        s = 2.0 * k + a + b
+        Bt[k] = (s + 1.0) * (s + 2.0) / (2.0 * (k + a + b + 1.0) * (k + a + 1.0))
+        Ct[k] = k * (k + b) * (s + 2.0) / ((k + a + b + 1.0) * s * (k + a + 1.0))
     th = theta.copy()
     m = th.shape[0]
     t = np.empty(m)
@@ -162,60 +158,64 @@ def _newton_recurrence(n, a, b, theta, Bt, Ct):
 # O(1) per node (about 2 rho theta terms), independent of n.
 # --------------------------------------------------------------------------
 @jit()
-def _hypergeometric_q(n, a, b, t):
-    """Q_n(t) = P_n^{(a,b)}(1-t)/P_n(1), dQ/dt, d2Q/dt2 via the dd series."""
+def _newton_boundary(n, a, b, theta):
+    """Newton in theta on the dd series; returns the angles and dQ_n/dt at them.
+
+    The term ratios rho_k = (k-n)(k+n+1+a+b) / ((k+1+a)(k+1)) do not depend on t:
+    they are formed once, in dd, and each evaluation of the series costs two dd
+    products per term for T_{k+1} = T_k rho_k (t/2) plus the sums
+    S = sum T_k (= Q_n),  S1 = sum k T_k (= t Q_n'),  S2 = sum k(k-1) T_k (= t^2 Q_n'').
+    S2 only moves Q_n' from the last iterate to the root (a relative change below
+    ~1e-13), so it is summed in double precision.
+    """
+    rh = np.empty(n)
+    rl = np.empty(n)
     abh, abl = two_sum(a, b)
-    ah, al = a, 0.0
-    th_, tl_ = 0.5 * t, 0.0
-    Th, Tl = 1.0, 0.0          # T_0
-    Sh, Sl = 1.0, 0.0          # sum T_k
-    S1h, S1l = 0.0, 0.0        # sum k T_k
-    S2h, S2l = 0.0, 0.0        # sum k (k-1) T_k
-    peak = 1.0
     for k in range(n):
-        # T_{k+1} = T_k (k-n)(k+n+1+a+b) / ((k+1+a)(k+1)) * t/2
         c1h, c1l = dd_add(abh, abl, k + n + 1.0, 0.0)
         numh, numl = dd_mul(c1h, c1l, k - n + 0.0, 0.0)
-        c2h, c2l = dd_add(ah, al, k + 1.0, 0.0)
+        c2h, c2l = two_sum(a, k + 1.0)
         denh, denl = dd_mul(c2h, c2l, k + 1.0, 0.0)
-        rh, rl = dd_div(numh, numl, denh, denl)
-        rh, rl = dd_mul(rh, rl, th_, tl_)
-        Th, Tl = dd_mul(Th, Tl, rh, rl)
-        kk = k + 1.0
-        Sh, Sl = dd_add(Sh, Sl, Th, Tl)
-        uh, ul = dd_mul(Th, Tl, kk, 0.0)
-        S1h, S1l = dd_add(S1h, S1l, uh, ul)
-        uh, ul = dd_mul(uh, ul, kk - 1.0, 0.0)
-        S2h, S2l = dd_add(S2h, S2l, uh, ul)
-        at = abs(Th)
-        if at > peak:
-            peak = at
-        if at < 1e-34 * peak and kk > 2.0:
-            break
-    return Sh + Sl, (S1h + S1l) / t, (S2h + S2l) / (t * t)
-
-
-@jit()
-def _newton_boundary(n, a, b, theta):
-    """Newton in theta on the dd series; returns angles and dQ_n/dt at them."""
+        rh[k], rl[k] = dd_div(numh, numl, denh, denl)
     th = theta.copy()
     m = th.shape[0]
     dqt = np.empty(m)
     for i in range(m):
         x = th[i]
+        q = 0.0
+        dq = 1.0
+        d2q = 0.0
         for it in range(_NEWTON_MAX):
             sh = math.sin(0.5 * x)
-            t = 2.0 * sh * sh
-            q, dq, d2q = _hypergeometric_q(n, a, b, t)
+            u = sh * sh                     # t/2, t = 2 sin^2(theta/2) = 1 - cos(theta)
+            Th, Tl = 1.0, 0.0               # T_0
+            Sh, Sl = 1.0, 0.0
+            S1h, S1l = 0.0, 0.0
+            s2 = 0.0
+            peak = 1.0
+            for k in range(n):
+                Th, Tl = dd_mul(Th, Tl, rh[k], rl[k])
+                Th, Tl = dd_mul(Th, Tl, u, 0.0)
+                kk = k + 1.0
+                Sh, Sl = dd_add(Sh, Sl, Th, Tl)
+                vh, vl = dd_mul(Th, Tl, kk, 0.0)
+                S1h, S1l = dd_add(S1h, S1l, vh, vl)
+                s2 += kk * (kk - 1.0) * Th
+                at = abs(Th)
+                if at > peak:
+                    peak = at
+                if at < 1e-34 * peak and kk > 2.0:
+                    break
+            t = 2.0 * u
+            q = Sh + Sl
+            dq = (S1h + S1l) / t
+            d2q = s2 / (t * t)
             # dQ/dtheta = Q'(t) sin(theta)
             step = q / (dq * math.sin(x))
             x -= step
-            if abs(step) < 1e-16 * x:
+            if abs(step) <= 2.5e-16 * x:    # within an ulp: the root in double precision
                 break
-        sh = math.sin(0.5 * x)
-        t = 2.0 * sh * sh
-        q, dq, d2q = _hypergeometric_q(n, a, b, t)
-        # move the derivative to the exact root: Q'(t*) = Q'(t) + Q''(t) (t* - t)
+        # move the derivative from the last iterate to the root: Q'(t*) = Q'(t) + Q''(t)(t* - t)
         dqt[i] = dq - d2q * q / dq
         th[i] = x
     return th, dqt
@@ -404,7 +404,7 @@ def _half_small(n, a, b, theta0):
     angles are close enough for the dd Newton iteration."""
     if theta0.size <= N_BOUNDARY:
         return _boundary_nodes(n, a, b, np.array(theta0, dtype=float))
-    th, q = _newton_recurrence(n, a, b, theta0, *_reinsch_coefficients(n, a, b))
+    th, q = _newton_recurrence(n, a, b, theta0)
     w = _weights_from_recurrence(n, a, b, th, q)
     nb = min(N_BOUNDARY, th.size)
     if nb:
@@ -438,12 +438,14 @@ def _golub_welsch_guess(n, a, b):
     ratio = np.ones_like(kk)
     ratio[1:] = (kk[1:] + a + b) / (s1[1:] - 1.0)
     off = 2.0 / s1 * np.sqrt(kk * (kk + a) * (kk + b) * ratio / (s1 + 1.0))
-    if n <= 40:
-        # dense LAPACK via numpy is faster here and keeps scipy (~0.2 s of import) off the
-        # first-call path of small problems
-        return np.linalg.eigvalsh(np.diag(diag) + np.diag(off, 1) + np.diag(off, -1))
-    from scipy.linalg import eigh_tridiagonal      # lazy: only for 40 < n <= 100
-    return eigh_tridiagonal(diag, off, eigvals_only=True)
+    # LAPACK dsterf (Pal-Walker-Kahan QL, eigenvalues only): 2x faster than numpy's dense
+    # eigvalsh or scipy's eigh_tridiagonal at these sizes.  Lazy import: numba's first
+    # call imports scipy.linalg anyway.
+    from scipy.linalg.lapack import dsterf
+    vals, info = dsterf(diag, off)
+    if info != 0:  # pragma: no cover - LAPACK failure on a symmetric tridiagonal
+        raise FloatingPointError(f"LAPACK dsterf failed (info = {info}) for n = {n}")
+    return vals
 
 
 def gauss_jacobi(n, alpha, beta):
