@@ -162,7 +162,7 @@ def _newton_boundary(n, a, b, theta):
     """Newton in theta on the dd series; returns the angles and dQ_n/dt at them.
 
     The term ratios rho_k = (k-n)(k+n+1+a+b) / ((k+1+a)(k+1)) do not depend on t:
-    they are formed once, in dd, and each evaluation of the series costs two dd
+    they are formed once (as far as the series reach), in dd, and each evaluation of the series costs two dd
     products per term for T_{k+1} = T_k rho_k (t/2) plus the sums
     S = sum T_k (= Q_n),  S1 = sum k T_k (= t Q_n'),  S2 = sum k(k-1) T_k (= t^2 Q_n'').
     S2 only moves Q_n' from the last iterate to the root (a relative change below
@@ -170,13 +170,8 @@ def _newton_boundary(n, a, b, theta):
     """
     rh = np.empty(n)
     rl = np.empty(n)
+    filled = 0      # rho_k is formed when a series first needs it (~100 terms of n = 1e5)
     abh, abl = two_sum(a, b)
-    for k in range(n):
-        c1h, c1l = dd_add(abh, abl, k + n + 1.0, 0.0)
-        numh, numl = dd_mul(c1h, c1l, k - n + 0.0, 0.0)
-        c2h, c2l = two_sum(a, k + 1.0)
-        denh, denl = dd_mul(c2h, c2l, k + 1.0, 0.0)
-        rh[k], rl[k] = dd_div(numh, numl, denh, denl)
     th = theta.copy()
     m = th.shape[0]
     dqt = np.empty(m)
@@ -194,6 +189,13 @@ def _newton_boundary(n, a, b, theta):
             s2 = 0.0
             peak = 1.0
             for k in range(n):
+                if k == filled:
+                    c1h, c1l = dd_add(abh, abl, k + n + 1.0, 0.0)
+                    numh, numl = dd_mul(c1h, c1l, k - n + 0.0, 0.0)
+                    c2h, c2l = two_sum(a, k + 1.0)
+                    denh, denl = dd_mul(c2h, c2l, k + 1.0, 0.0)
+                    rh[k], rl[k] = dd_div(numh, numl, denh, denl)
+                    filled += 1
                 Th, Tl = dd_mul(Th, Tl, rh[k], rl[k])
                 Th, Tl = dd_mul(Th, Tl, u, 0.0)
                 kk = k + 1.0
