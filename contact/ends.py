@@ -40,45 +40,57 @@ class _Problem:
     def right(self):
         return self.punch.ends[1]
 
-    def _equation(self, xl, xr):
+    def _equation(self, xl, xr, checked=False):
+        """Half-width, f(s) = slope(h s + m) and the breaks in s on the trial contact [xl, xr].
+
+        ``checked=False`` uses the punch's raw slope: sie checks what f returns (shape,
+        finiteness) anyway, and checking it twice per trial was a third of the cost of a
+        free-end search.  :meth:`_run` re-runs a failed call with the checked slope so that
+        the error names the punch and the X.
+        """
         h = 0.5 * (xr - xl)
         m = 0.5 * (xr + xl)
-        slope = self.punch.slope
+        slope = self.punch.slope if checked else self.punch._slope
         br = [(x - m) / h for x in self.punch.breaks if xl < x < xr]
         br = [s for s in br if abs(s) < 1.0 - 1e-12]
         return h, (lambda s: slope(h * s + m)), br
 
-    def _call_sie(self, fn, **kw):
+    def _run(self, xl, xr, fn):
+        """``fn(h, f, breaks)`` for the trial contact [xl, xr] (see :meth:`_equation`)."""
         try:
-            return fn(a=self.a, b=self.b, left=self.left, right=self.right, **kw)
+            return fn(*self._equation(xl, xr))
+        except CallableOutputError as exc:
+            first = exc
+        try:                      # the same call with the checked slope, for a precise error
+            fn(*self._equation(xl, xr, checked=True))
         except CallableOutputError as exc:
             if isinstance(exc.__cause__, ContactInputError):
                 raise exc.__cause__ from None
             raise
+        raise first
+
+    def _sie_kw(self):
+        return dict(a=self.a, b=self.b, left=self.left, right=self.right)
 
     def solve_on(self, xl, xr, n=None):
         """The full solution on the trial contact [xl, xr]."""
-        h, f, br = self._equation(xl, xr)
-        total = self.load / h if self.punch.kappa == 1 else None
-        return self._call_sie(lambda **kw: sie.solve(f, **kw), n=self.n if n is None else n,
-                              total=total, breaks=br)
+        n = self.n if n is None else n
+
+        def run(h, f, br):
+            total = self.load / h if self.punch.kappa == 1 else None
+            return sie.solve(f, n=n, total=total, breaks=br, **self._sie_kw())
+        return self._run(xl, xr, run)
 
     def functionals_on(self, xl, xr):
         """(load carried, solvability residual) on [xl, xr], without forming the solution
         (a prepared Gauss rule when no break falls inside the trial contact)."""
-        h, f, br = self._equation(xl, xr)
-        if br:
-            fun = self._call_sie(lambda **kw: sie.dominant_functionals(f, **kw), n=self.n,
-                                 breaks=br)
-        else:
+        def run(h, f, br):
+            if br:
+                return h, sie.dominant_functionals(f, n=self.n, breaks=br, **self._sie_kw())
             if self._rule is None:
-                self._rule = self._call_sie(lambda **kw: sie.FunctionalsRule(**kw), n=self.n)
-            try:
-                fun = self._rule(f)
-            except CallableOutputError as exc:
-                if isinstance(exc.__cause__, ContactInputError):
-                    raise exc.__cause__ from None
-                raise
+                self._rule = sie.FunctionalsRule(n=self.n, **self._sie_kw())
+            return h, self._rule(f)
+        h, fun = self._run(xl, xr, run)
         return h * fun.integral, fun.consistency
 
     def load_on(self, xl, xr):

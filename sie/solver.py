@@ -107,14 +107,18 @@ def _call_checked(fn, name, args, shape):
         out = fn(*args)
     except (ValueError, TypeError, ArithmeticError) as exc:
         raise CallableOutputError(f"{name} raised {type(exc).__name__}: {exc}") from exc
-    out = np.asarray(out, dtype=float) if not np.iscomplexobj(out) else out
-    if np.iscomplexobj(out):
+    out = np.asarray(out)
+    if out.dtype.kind == "c":
         raise CallableOutputError(f"{name} must return real values, got complex")
+    try:
+        out = out.astype(float, copy=False)
+    except (TypeError, ValueError) as exc:
+        raise CallableOutputError(f"{name} must return real numbers, got {out.dtype}: {exc}") from exc
     if out.shape != shape:
         raise CallableOutputError(
             f"{name} must be vectorised: called with arrays of shape {shape} it must return "
             f"that shape, got {out.shape}")
-    if not np.all(np.isfinite(out)):
+    if not np.isfinite(out).all():
         bad = np.flatnonzero(~np.isfinite(out.ravel()))[0]
         where = tuple(float(np.ravel(a)[bad]) for a in args)
         raise CallableOutputError(f"{name} returned a non-finite value at {where}")

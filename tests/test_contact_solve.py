@@ -414,6 +414,8 @@ def test_bad_punch_dimensions(make, match):
     (lambda X: np.where(X > 0.2, np.inf, X / 100.0), "non-finite"),
     (lambda X: 0.0, "vectorised"),
     (lambda X: np.zeros(3), "vectorised"),
+    (lambda X: 1e-3j * X, "real"),
+    (lambda X: X / math.sqrt(-1.0), "raised ValueError"),
 ])
 @pytest.mark.parametrize("corners", [(None, None), (0.0, None), (-1.0, 1.0)])
 def test_bad_slope_callable(slope, match, corners):

@@ -527,7 +527,7 @@ def _names(msg, name):
     if len(name) > 1:
         return re.search(rf"\b{re.escape(name)}\b", msg) is not None
     pat = (rf"['\"`]{name}['\"`]|(?<![\w'\"`-]){name}(?=\s*(?:==|!=|=|≠|<|>|≤|≥|:|\(|\)|,|\.|;|\[|$)"
-           rf"|\s+(?:must|is|was|should|has|had|cannot|can't|returned|returns|return|gave|produced"
+           rf"|\s+(?:must|is|was|should|has|had|cannot|can't|returned|returns|return|raised|raises|gave|produced"
            rf"|contains|evaluat|values?|output|of|not|may|needs?|required)\b)")
     return re.search(pat, msg) is not None
 
@@ -571,6 +571,9 @@ BAD = [
     ("f returns one value too many", 0, {}, lambda s: np.ones(np.size(s) + 1), "f"),
     ("f returns a 2-D array", 0, {}, lambda s: np.ones((2,) + np.shape(s)), "f"),
     ("f returns NaN", 0, {}, lambda s: np.full(np.shape(s), nan), "f"),
+    ("f returns complex values", 0, {}, lambda s: np.exp(1j * np.asarray(s)), "f"),
+    ("f returns strings", 1, {}, lambda s: np.full(np.shape(s), "x"), "f"),
+    ("f raises ValueError", -1, {}, lambda s: float("not a number"), "f"),
     ("f returns NaN at s>0.5 only", -1, {}, lambda s: np.where(np.asarray(s) > 0.5, nan, 1.0), "f"),
     ("kernel returns NaN", 0, dict(kernel=lambda s, t: np.full(np.broadcast(s, t).shape, nan)), _f_ok, "kernel"),
     ("kernel returns NaN for s*t<-0.25", 1,
