@@ -88,3 +88,29 @@ def check_exponent(name: str, value) -> float:
         raise InvalidExponentError(
             f"{name} must be > -1 (the weight (1-x)^alpha (1+x)^beta must be integrable), got {v!r}")
     return v
+
+
+def call_checked(fn, name, args, shape):
+    """``fn(*args)`` as a float array of the given shape, or a :class:`CallableOutputError`
+    naming ``name`` (an exception inside fn, complex or non-numeric output, a wrong shape,
+    a non-finite value and where it occurred)."""
+    try:
+        out = fn(*args)
+    except (ValueError, TypeError, ArithmeticError) as exc:
+        raise CallableOutputError(f"{name} raised {type(exc).__name__}: {exc}") from exc
+    out = np.asarray(out)
+    if out.dtype.kind == "c":
+        raise CallableOutputError(f"{name} must return real values, got complex")
+    try:
+        out = out.astype(float, copy=False)
+    except (TypeError, ValueError) as exc:
+        raise CallableOutputError(f"{name} must return real numbers, got {out.dtype}: {exc}") from exc
+    if out.shape != shape:
+        raise CallableOutputError(
+            f"{name} must be vectorised: called with arrays of shape {shape} it must return "
+            f"that shape, got {out.shape}")
+    if not np.isfinite(out).all():
+        bad = np.flatnonzero(~np.isfinite(out.ravel()))[0]
+        where = tuple(float(np.ravel(a)[bad]) for a in args)
+        raise CallableOutputError(f"{name} returned a non-finite value at {where}")
+    return out

@@ -41,6 +41,7 @@ G. H. Golub and J. H. Welsch, Math. Comp. 23 (1969) 221-230.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -495,4 +496,14 @@ def gauss_jacobi(n, alpha, beta):
 
     x = np.concatenate([-np.cos(th_l), np.cos(th_r[::-1])])
     w = np.concatenate([w_l, w_r[::-1]])
+    return x, w
+
+
+@functools.lru_cache(maxsize=256)
+def gauss_jacobi_cached(q, a, b):
+    """gauss_jacobi(q, a, b), memoised (read-only arrays): the contact layer solves
+    the same-exponent equation many times while it searches for free contact ends."""
+    x, w = gauss_jacobi(q, a, b)
+    x.flags.writeable = False
+    w.flags.writeable = False
     return x, w

@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .gaussjacobi import gauss_jacobi
+from .errors import call_checked
+from .gaussjacobi import gauss_jacobi, gauss_jacobi_cached
 from .jacobi import jacobi_series
 from .special import jacobi_moment_shifted
 
@@ -65,7 +66,6 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
     proportion to the piece, at least q_small) on the geometric sub-intervals next to a
     break.  End pieces carry their end's Jacobi weight in the rule; elsewhere it is smooth
     and multiplies the Gauss-Legendre weights."""
-    from .solver import _gauss_cached
     edges = np.concatenate([[-1.0], pts, [1.0]])
     gaps = np.concatenate([[-1.0], breaks, [1.0]])
     los, his = edges[:-1], edges[1:]
@@ -80,7 +80,7 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
         half = 0.5 * (hi - lo)
         inner = (lo != -1.0) & (hi != 1.0)
         if inner.any():                          # Gauss-Legendre times the smooth weight
-            u, wu = _gauss_cached(int(qq), 0.0, 0.0)
+            u, wu = gauss_jacobi_cached(int(qq), 0.0, 0.0)
             x = lo[inner, None] + half[inner, None] * (u + 1.0)
             w = (half[inner, None] * wu) * (1.0 - x) ** alpha * (1.0 + x) ** beta
             xs.append(x.ravel())
@@ -88,7 +88,7 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
         for i in np.flatnonzero(~inner):         # an end piece: its end's Jacobi weight
             ea = alpha if hi[i] == 1.0 else 0.0
             eb = beta if lo[i] == -1.0 else 0.0
-            u, wu = _gauss_cached(int(qq), ea, eb)
+            u, wu = gauss_jacobi_cached(int(qq), ea, eb)
             x = lo[i] + half[i] * (u + 1.0)
             w = wu * half[i] ** (1.0 + ea + eb)
             if hi[i] != 1.0:
@@ -131,7 +131,6 @@ class InversionRemainder:
 
     @classmethod
     def build(cls, sol, f, kernel, breaks, s, ws, fs, fhat, kc, lam):
-        from .solver import _call_checked
         alpha, beta = sol.alpha, sol.beta
         g_coef = fhat - (kc if kc is not None else 0.0)
         t_k = w_k = phi_k = None
@@ -148,7 +147,7 @@ class InversionRemainder:
         for shift in (0, 1):    # two interleaved rules: counts differ by one on every piece,
             # so no x (e.g. a piece midpoint, a node of every odd-count rule) is a node of both
             nodes, weights = _graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
-            fvals = _call_checked(f, "f", (nodes,), nodes.shape)
+            fvals = call_checked(f, "f", (nodes,), nodes.shape)
             self.rules.append((nodes, weights, self._r(nodes, fvals)))
         # rule for integrals against w: delta_phi behaves like (x - c) log|x - c| at a break c,
         # so the pieces are graded geometrically toward each break (hp quadrature; without
@@ -172,16 +171,14 @@ class InversionRemainder:
         return out
 
     def _kpsi(self, x):
-        from .solver import _call_checked
         X, T = np.meshgrid(x, self.t_k, indexing="ij")
-        k = _call_checked(self.kernel, "kernel", (X, T), X.shape)
+        k = call_checked(self.kernel, "kernel", (X, T), X.shape)
         return k @ (self.w_k * self.phi_k)
 
     def _phi_no_const(self, x):
-        from .solver import _call_checked
         sol = self.sol
         x = np.asarray(x, dtype=float)
-        fx = _call_checked(self.f, "f", (x,), x.shape)
+        fx = call_checked(self.f, "f", (x,), x.shape)
         rx = self._r(x, fx)
         # per point, the rule whose nearest node is farther from x
         dist = [np.min(np.abs(nodes[None, :] - x[:, None]), axis=1) for nodes, _, _ in self.rules]
@@ -212,9 +209,8 @@ class InversionRemainder:
 
     def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
-        from .solver import _call_checked
         sol = self.sol
-        gx = _call_checked(self.f, "f", (x,), x.shape)
+        gx = call_checked(self.f, "f", (x,), x.shape)
         if self.kernel is not None:
             gx = gx - self._kpsi(x)
         return (gx - sol.a * psi_full) / sol.b

@@ -28,7 +28,6 @@ of phi then decays only like k^{-2}).
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass, field
 
@@ -36,8 +35,8 @@ import numpy as np
 
 from .errors import (CallableOutputError, EvaluationPointError, InvalidBreakpointError,
                      InvalidCoefficientError, InvalidEndConditionError, SideConditionError,
-                     check_finite_real, check_order)
-from .gaussjacobi import gauss_jacobi
+                     call_checked, check_finite_real, check_order)
+from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
 from .special import jacobi_end_values, jacobi_moment_shifted
 
@@ -102,29 +101,6 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
 # --------------------------------------------------------------------------
 # validation helpers
 # --------------------------------------------------------------------------
-def _call_checked(fn, name, args, shape):
-    try:
-        out = fn(*args)
-    except (ValueError, TypeError, ArithmeticError) as exc:
-        raise CallableOutputError(f"{name} raised {type(exc).__name__}: {exc}") from exc
-    out = np.asarray(out)
-    if out.dtype.kind == "c":
-        raise CallableOutputError(f"{name} must return real values, got complex")
-    try:
-        out = out.astype(float, copy=False)
-    except (TypeError, ValueError) as exc:
-        raise CallableOutputError(f"{name} must return real numbers, got {out.dtype}: {exc}") from exc
-    if out.shape != shape:
-        raise CallableOutputError(
-            f"{name} must be vectorised: called with arrays of shape {shape} it must return "
-            f"that shape, got {out.shape}")
-    if not np.isfinite(out).all():
-        bad = np.flatnonzero(~np.isfinite(out.ravel()))[0]
-        where = tuple(float(np.ravel(a)[bad]) for a in args)
-        raise CallableOutputError(f"{name} returned a non-finite value at {where}")
-    return out
-
-
 def _check_breaks(breaks):
     if isinstance(breaks, (tuple, list)) and len(breaks) == 0:
         return np.empty(0)
@@ -145,16 +121,6 @@ def _check_breaks(breaks):
 # Gauss-Jacobi sums with the mass of a nearly non-integrable end taken out
 # --------------------------------------------------------------------------
 _NEAR_MINUS_ONE = 0.01   # e + 1 below this: the weight's end mass ~ 1/(e+1) is split off
-
-
-@functools.lru_cache(maxsize=256)
-def _gauss_cached(q, a, b):
-    """gauss_jacobi(q, a, b), memoised (read-only arrays): the contact layer solves
-    the same-exponent equation many times while it searches for free contact ends."""
-    x, w = gauss_jacobi(q, a, b)
-    x.flags.writeable = False
-    w.flags.writeable = False
-    return x, w
 
 
 @dataclass(frozen=True)
@@ -185,15 +151,15 @@ class _WeightedRule:
     @classmethod
     def build(cls, q, a, b, a_p1, b_p1):
         if min(a_p1, b_p1) >= _NEAR_MINUS_ONE:
-            x, w = _gauss_cached(q, a, b)
+            x, w = gauss_jacobi_cached(q, a, b)
             return cls(x, w, 0, 0.0, a, b, a_p1, b_p1)
         mu0 = jacobi_moment_shifted(a_p1, b_p1)
         if a_p1 < b_p1:                       # the mass sits at x = +1
-            x, w = _gauss_cached(q, a_p1, b)
+            x, w = gauss_jacobi_cached(q, a_p1, b)
             omega = w / (1.0 - x)
             end = 1
         else:
-            x, w = _gauss_cached(q, a, b_p1)
+            x, w = gauss_jacobi_cached(q, a, b_p1)
             omega = w / (1.0 + x)
             end = -1
         return cls(x, omega, end, float(mu0 - omega.sum()), a, b, a_p1, b_p1)
@@ -227,7 +193,7 @@ def _composite_rule(q, alpha, beta, breaks):
         half = 0.5 * (hi - lo)
         ea = alpha if i == len(edges) - 2 else 0.0
         eb = beta if i == 0 else 0.0
-        u, wu = _gauss_cached(q, ea, eb)
+        u, wu = gauss_jacobi_cached(q, ea, eb)
         # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
         s = lo + half * (u + 1.0)
         w = wu * half ** (1.0 + ea + eb)
@@ -410,7 +376,7 @@ class Solution:
             xf = x[far]
             # Gauss: error ~ rho_b^(-2 m) for the analytic part; the polynomial needs m >= n/2
             need = int(np.ceil(self.n / 2 + 40.0 / (2.0 * np.log(rho_b[far]).min()))) + 8
-            t, w = _gauss_cached(max(need, self.n), self.alpha, self.beta)
+            t, w = gauss_jacobi_cached(max(need, self.n), self.alpha, self.beta)
             wf = w * jacobi_series(self.coefficients, self.alpha, self.beta, t)
             out[far] = (wf[None, :] / (t[None, :] - xf[:, None])).sum(axis=1) / math.pi
         if self._remainder is not None:
@@ -463,7 +429,7 @@ def _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h):
     s_aug = np.concatenate([s, [float(s_end)]]) if s_end else s
     t_aug = np.concatenate([trule.x, [float(trule.end)]]) if trule.end else trule.x
     S, T = np.meshgrid(s_aug, t_aug, indexing="ij")
-    kst = _call_checked(kernel, "kernel", (S, T), S.shape)
+    kst = call_checked(kernel, "kernel", (S, T), S.shape)
     nt = trule.x.size
     Pt = jacobi_vandermonde(n, alpha, beta, trule.x)               # (nt, n)
     G = (kst[:, :nt] * trule.omega) @ Pt                          # (q[+1], n)
@@ -511,9 +477,9 @@ def _project_rhs(f, e, m_eq, br, count):
     else:
         rule = None
         s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
-    fs = _call_checked(f, "f", (s,), s.shape)
+    fs = call_checked(f, "f", (s,), s.shape)
     if rule is not None and rule.end:
-        f_end = float(_call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
+        f_end = float(call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
         fhat = rule.project(fs, f_end, count) / h
     else:
         fhat = jacobi_project(ws * fs, -alpha, -beta, s, count) / h
@@ -598,10 +564,10 @@ class FunctionalsRule:
             return Functionals(None, None, e.alpha, e.beta, 1)
         if not callable(f):
             raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
-        fs = _call_checked(f, "f", (self.nodes,), self.nodes.shape)
+        fs = call_checked(f, "f", (self.nodes,), self.nodes.shape)
         f_end = 0.0
         if self.end:
-            f_end = float(_call_checked(f, "f", (np.array([float(self.end)]),), (1,))[0])
+            f_end = float(call_checked(f, "f", (np.array([float(self.end)]),), (1,))[0])
         f0 = float(self._w[0] @ fs + self._w_end[0] * f_end)
         if self.kappa == 0:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)

@@ -32,7 +32,6 @@ from __future__ import annotations
 import functools
 import os
 
-import mpmath
 import numpy as np
 import pytest
 from mpmath import mp, mpf

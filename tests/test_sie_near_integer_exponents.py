@@ -3,7 +3,6 @@
 References: mpmath at 40 digits from the *exact* shifted exponent (e + 1), never
 from a rounded e.
 """
-import math
 
 import numpy as np
 import pytest
