@@ -171,7 +171,7 @@ def _slow(run_case, delay):
 
 def test_progress_bar_on_a_slow_sweep_and_quiet_turns_it_off(monkeypatch, capsys, tmp_path):
     import contact.scene as scene_module
-    monkeypatch.setattr(scene_module, "run_case", _slow(scene_module.run_case, 0.45))
+    monkeypatch.setattr(scene_module.run, "run_case", _slow(scene_module.run.run_case, 0.45))
     assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "a")]) == 0
     assert "cases" in capsys.readouterr().err                 # tqdm's bar, after ~1 s
     assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "b"), "--quiet"]) == 0

@@ -270,7 +270,7 @@ def test_bad_scene_fails_before_any_computation(tmp_path, monkeypatch, capsys):
     def forbidden(*a, **k):
         raise AssertionError("a contact problem was solved for a bad scene")
     monkeypatch.setattr(contact, "solve", forbidden)
-    monkeypatch.setattr(contact.scene, "run_case", forbidden)
+    monkeypatch.setattr(contact.scene.run, "run_case", forbidden)
     for name in ("unknown-key", "speed-at-rayleigh", "module-does-not-import", "toml-syntax"):
         path = tmp_path / f"{name}.toml"
         path.write_text(BAD[name][0])

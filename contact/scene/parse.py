@@ -1,0 +1,440 @@
+"""Reading and validating scene TOML (every problem is a SceneError naming file and key)."""
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+import contact
+
+from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, MATERIAL_KEYS, METHODS,
+                   MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS, PIECE_KEYS,
+                   PRESETS, PROFILE_KEYS, PUNCH_DIMENSIONS, Piece, PunchSpec, SECTIONS, Scene,
+                   SceneError, XGrid, X_KEYS, import_callable)
+
+
+# --------------------------------------------------------------------------
+# parsing and validation
+# --------------------------------------------------------------------------
+def default_scene() -> Scene:
+    """The embedded default scene (:data:`DEFAULT_SCENE_TOML`)."""
+    return parse_scene_text(DEFAULT_SCENE_TOML, source="<embedded default>")
+
+
+def load_scene(path) -> Scene:
+    """Read, parse and validate a scene file.
+
+    Raises
+    ------
+    SceneError
+        For any problem: unreadable file, TOML syntax (with its line), unknown key (with the
+        closest known one), wrong type, missing load, speed >= c_R, negative friction, a
+        profile function that does not import, ...  Nothing is solved before it returns.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise SceneError(path, None, "no such scene file") from None
+    except IsADirectoryError:
+        raise SceneError(path, None, "is a directory, not a scene file",
+                         "a TOML file, e.g. validation/scenes/default.toml") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SceneError(path, None, f"cannot be read: {exc}") from None
+    return parse_scene_text(text, source=str(path), base_dir=str(path.resolve().parent))
+
+
+def parse_scene_text(text: str, source: str = "<string>", base_dir=None) -> Scene:
+    """Parse and validate a scene given as TOML text (see :func:`load_scene`)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(source, None, f"TOML syntax error: {exc}",
+                         "TOML, see https://toml.io") from None
+    return _Parser(source, base_dir).scene(data)
+
+
+class _Parser:
+    """Turns the dict from tomllib into a :class:`Scene`, raising SceneError on the way."""
+
+    def __init__(self, source, base_dir):
+        self.source = str(source)
+        self.base_dir = base_dir
+
+    def error(self, key, problem, allowed=None):
+        return SceneError(self.source, key, problem, allowed)
+
+    # ---- generic checks ---------------------------------------------------
+    def check_keys(self, table: dict, allowed, where: str, hint: str = ""):
+        for key in table:
+            if key not in allowed:
+                close = difflib.get_close_matches(key, allowed, n=1, cutoff=0.5)
+                guess = f"; did you mean {close[0]!r}?" if close else ""
+                name = f"{where}.{key}" if where else key
+                raise self.error(name, f"unknown key{hint}{guess}", ", ".join(allowed))
+
+    def table(self, data: dict, name: str, required=False) -> dict:
+        if name not in data:
+            if required:
+                raise self.error(name, f"the [{name}] section is missing")
+            return {}
+        value = data[name]
+        if not isinstance(value, dict):
+            raise self.error(name, f"must be a table [{name}], got {_describe(value)}")
+        return value
+
+    def number(self, key, value, allowed="a number") -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.error(key, f"must be a number, got {_describe(value)}", allowed)
+        v = float(value)
+        if not math.isfinite(v):
+            raise self.error(key, f"must be finite, got {v!r}", allowed)
+        return v
+
+    def values(self, key, value, check, sweepable=True):
+        """A scalar, or a list of scalars (a sweep): each passed through ``check``."""
+        if isinstance(value, list) and sweepable:
+            if not value:
+                raise self.error(key, "is an empty list", "a value, or a non-empty list of "
+                                 "values (a sweep)")
+            return tuple(check(f"{key}[{k}]", v) for k, v in enumerate(value))
+        return check(key, value)
+
+    # ---- sections -----------------------------------------------------------
+    def scene(self, data: dict) -> Scene:
+        self.check_keys(data, SECTIONS, "")
+        title = data.get("title", "")
+        if not isinstance(title, str):
+            raise self.error("title", f"must be a string, got {_describe(title)}")
+        material = self.material(self.table(data, "material", required=True))
+        punch = self.punch(self.table(data, "punch", required=True))
+        motion = self.motion(self.table(data, "motion", required=True), material)
+        fields, x = self.outputs(self.table(data, "outputs"))
+        numerics = self.numerics(self.table(data, "numerics"), punch["kind"])
+        order = [name for name in data if name in ("punch", "motion")]
+        sweepable = {"punch": PUNCH_DIMENSIONS[punch["kind"]], "motion": MOTION_KEYS}
+        sweep = tuple((sec, key) for sec in order
+                      for key, v in (punch if sec == "punch" else motion).items()
+                      if isinstance(v, tuple) and key in sweepable[sec])
+        if not title:
+            title = _default_title(punch)
+        scene = Scene(source=self.source, title=title, material=material, punch=punch,
+                      motion=motion, fields=fields, x=x, numerics=numerics, sweep=sweep,
+                      base_dir=self.base_dir)
+        self.check_cases(scene)
+        return scene
+
+    def material(self, table: dict) -> MaterialSpec:
+        self.check_keys(table, MATERIAL_KEYS, "material")
+        rho = None
+        if "rho" in table:
+            rho = self.number("material.rho", table["rho"], "a density > 0")
+            if rho <= 0:
+                raise self.error("material.rho", f"must be > 0, got {rho!r}", "a density > 0")
+        stiff = [k for k in ("C11", "C12", "C22", "C33") if k in table]
+        if "preset" in table:
+            preset = table["preset"]
+            if stiff:
+                raise self.error(f"material.{stiff[0]}", "given together with material.preset",
+                                 "either preset or all of C11, C12, C22, C33")
+            if preset not in PRESETS:
+                close = difflib.get_close_matches(str(preset), PRESETS, n=1)
+                guess = f"; did you mean {close[0]!r}?" if close else ""
+                raise self.error("material.preset", f"unknown preset {preset!r}{guess}",
+                                 ", ".join(repr(p) for p in PRESETS))
+            m = PRESETS[preset]()
+            return MaterialSpec(m.C11, m.C12, m.C22, m.C33, rho=rho, preset=preset)
+        missing = [k for k in ("C11", "C12", "C22", "C33") if k not in table]
+        if missing:
+            raise self.error(f"material.{missing[0]}", "is missing",
+                             'all of C11, C12, C22, C33 (numbers), or preset = "zhou2014"')
+        C = [self.number(f"material.{k}", table[k], "a number (stiffness; sweeps are allowed "
+                         "only under [motion] and [punch])") for k in ("C11", "C12", "C22", "C33")]
+        try:
+            contact.Orthotropic(*C, rho=rho)
+        except contact.MaterialError as exc:
+            raise self.error("material", str(exc)) from None
+        return MaterialSpec(*C, rho=rho)
+
+    def punch(self, table: dict) -> dict:
+        if "kind" not in table:
+            raise self.error("punch.kind", "is missing", " | ".join(PUNCH_DIMENSIONS))
+        kind = table["kind"]
+        if kind not in PUNCH_DIMENSIONS:
+            close = difflib.get_close_matches(str(kind), PUNCH_DIMENSIONS, n=1)
+            guess = f"; did you mean {close[0]!r}?" if close else ""
+            raise self.error("punch.kind", f"unknown kind {kind!r}{guess}",
+                             " | ".join(PUNCH_DIMENSIONS))
+        dims = PUNCH_DIMENSIONS[kind]
+        allowed = ("kind",) + (PROFILE_KEYS if kind == "profile" else dims)
+        self.check_keys(table, allowed, "punch", hint=f" for a {kind} punch")
+        out = {"kind": kind}
+        if kind != "profile":
+            key = dims[0]
+            if key not in table:
+                raise self.error(f"punch.{key}", f"is missing (a {kind} punch needs it)",
+                                 "a positive number, or a list of them (a sweep)")
+            out[key] = self.values(f"punch.{key}", table[key], self.positive)
+            return out
+        out.update(self.profile(table))
+        return out
+
+    def positive(self, key, value) -> float:
+        v = self.number(key, value, "a positive number, or a list of them (a sweep)")
+        if v <= 0:
+            raise self.error(key, f"must be > 0, got {v!r}",
+                             "a positive number, or a list of them (a sweep)")
+        return v
+
+    def profile(self, table: dict) -> dict:
+        out = {}
+        if ("slope" in table) == ("pieces" in table):
+            raise self.error("punch.slope", "a profile punch needs exactly one of slope and "
+                             "pieces", 'slope = [a0, a1, ...] (dv/dX coefficients, low to high), '
+                             'slope = "module:function", or [[punch.pieces]] tables')
+        if "slope" in table:
+            out["slope"] = self.profile_slope(table["slope"])
+        else:
+            out["pieces"] = self.pieces(table["pieces"])
+        breaks = table.get("breaks", [])
+        if not isinstance(breaks, list):
+            raise self.error("punch.breaks", f"must be a list of numbers, got {_describe(breaks)}",
+                             "a list of X values, e.g. [-1.0, 1.0]")
+        out["breaks"] = tuple(self.number(f"punch.breaks[{k}]", b, "a number (an X value)")
+                              for k, b in enumerate(breaks))
+        out["corners"] = self.corners(table.get("corners", [FREE, FREE]))
+        return out
+
+    def profile_slope(self, value):
+        allowed = 'a list of polynomial coefficients of dv/dX, low to high, or "module:function"'
+        if isinstance(value, str):
+            module, sep, name = value.partition(":")
+            if not sep or not module or not name:
+                raise self.error("punch.slope", f"{value!r} is not of the form 'module:function'",
+                                 allowed)
+            try:
+                import_callable(value, self.base_dir)
+            except Exception as exc:               # any failure of user code is a scene error
+                raise self.error("punch.slope", f"cannot import {value!r}: "
+                                 f"{type(exc).__name__}: {exc}",
+                                 "an importable module (the scene's directory is searched first) "
+                                 "and a function in it") from None
+            return value
+        if not isinstance(value, list) or not value:
+            raise self.error("punch.slope", f"must be a non-empty list or a string, got "
+                             f"{_describe(value)}", allowed)
+        return tuple(self.number(f"punch.slope[{k}]", c, allowed) for k, c in enumerate(value))
+
+    def pieces(self, value) -> tuple:
+        allowed = "[[punch.pieces]] tables with from, to, coefficients, in increasing X"
+        if not isinstance(value, list) or not value or not all(isinstance(p, dict) for p in value):
+            raise self.error("punch.pieces", f"must be an array of tables, got {_describe(value)}",
+                             allowed)
+        pieces = []
+        last = len(value) - 1
+        for k, p in enumerate(value):
+            key = f"punch.pieces[{k}]"
+            self.check_keys(p, PIECE_KEYS, key)
+            start = -math.inf if (k == 0 and "from" not in p) else None
+            stop = math.inf if (k == last and "to" not in p) else None
+            for name, bound in (("from", start), ("to", stop)):
+                if bound is None and name not in p:
+                    raise self.error(f"{key}.{name}", "is missing (only the first piece may "
+                                     "omit from, only the last may omit to)", allowed)
+            start = self.number(f"{key}.from", p["from"]) if start is None else start
+            stop = self.number(f"{key}.to", p["to"]) if stop is None else stop
+            if not start < stop:
+                raise self.error(key, f"from = {start!r} is not below to = {stop!r}", allowed)
+            if pieces and start != pieces[-1].stop:
+                raise self.error(f"{key}.from", f"= {start!r} does not continue the previous "
+                                 f"piece, which ends at to = {pieces[-1].stop!r}",
+                                 "pieces that join: each from equal to the previous to")
+            coefficients = p.get("coefficients")
+            if not isinstance(coefficients, list) or not coefficients:
+                raise self.error(f"{key}.coefficients", f"must be a non-empty list of numbers, "
+                                 f"got {_describe(coefficients)}",
+                                 "dv/dX coefficients, low to high")
+            pieces.append(Piece(start, stop, tuple(
+                self.number(f"{key}.coefficients[{j}]", c) for j, c in enumerate(coefficients))))
+        return tuple(pieces)
+
+    def corners(self, value) -> tuple:
+        allowed = f'[left, right], each the X of a sharp corner or "{FREE}"'
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.error("punch.corners", f"must be a list of two entries, got "
+                             f"{_describe(value)}", allowed)
+        out = []
+        for side, c in zip(("left", "right"), value):
+            if c == FREE:
+                out.append(None)
+            elif isinstance(c, str):
+                raise self.error(f"punch.corners ({side})", f"unknown word {c!r}", allowed)
+            else:
+                out.append(self.number(f"punch.corners ({side})", c, allowed))
+        if None not in out and not out[0] < out[1]:
+            raise self.error("punch.corners", f"left = {out[0]!r} is not below right = "
+                             f"{out[1]!r}", allowed)
+        return tuple(out)
+
+    def motion(self, table: dict, material: MaterialSpec) -> dict:
+        self.check_keys(table, MOTION_KEYS, "motion")
+        if "load" not in table:
+            raise self.error("motion.load", "is missing",
+                             "a positive number (force per unit length), or a list of them")
+        out = {"load": self.values("motion.load", table["load"], self.positive)}
+        if "velocity" in table:
+            if "speed" in table:
+                raise self.error("motion.velocity", "given together with motion.speed",
+                                 "either speed (relative, c = V/sqrt(C33/rho)) or velocity V")
+            if material.rho is None:
+                raise self.error("motion.velocity", "needs material.rho to convert V into the "
+                                 "relative speed c = V/sqrt(C33/rho)",
+                                 "material.rho > 0, or motion.speed instead")
+            out["velocity"] = self.values("motion.velocity", table["velocity"], self.nonnegative)
+        else:
+            out["speed"] = self.values("motion.speed", table.get("speed", 0.0), self.nonnegative)
+        out["friction"] = self.values("motion.friction", table.get("friction", 0.0),
+                                      self.nonnegative)
+        out["direction"] = self.values("motion.direction", table.get("direction", -1),
+                                       self.direction)
+        # keep the scene's order of keys (it orders the sweep), defaults after
+        order = [k for k in table if k in out] + [k for k in out if k not in table]
+        return {k: out[k] for k in order}
+
+    def nonnegative(self, key, value) -> float:
+        allowed = "a number >= 0, or a list of them (a sweep)"
+        v = self.number(key, value, allowed)
+        if v < 0:
+            raise self.error(key, f"{v!r} is negative", allowed)
+        return v
+
+    def direction(self, key, value) -> int:
+        if isinstance(value, bool) or value not in (-1, 1):
+            raise self.error(key, f"must be -1 or +1, got {_describe(value)}",
+                             "-1 (punch slides toward -X) or +1 (toward +X), or a list of them")
+        return int(value)
+
+    def outputs(self, table: dict):
+        self.check_keys(table, OUTPUT_KEYS, "outputs")
+        fields = table.get("fields", list(DEFAULT_FIELDS))
+        if isinstance(fields, str):
+            fields = [fields]
+        if not isinstance(fields, list) or not fields:
+            raise self.error("outputs.fields", f"must be a non-empty list of field names, got "
+                             f"{_describe(fields)}", ", ".join(FIELDS))
+        seen = []
+        for k, f in enumerate(fields):
+            if not isinstance(f, str) or f not in FIELDS:
+                close = difflib.get_close_matches(str(f), FIELDS, n=1)
+                guess = f"; did you mean {close[0]!r}?" if close else ""
+                raise self.error(f"outputs.fields[{k}]", f"unknown field {f!r}{guess}",
+                                 ", ".join(FIELDS))
+            if f not in seen:
+                seen.append(f)
+        x = None
+        if "x" in table:
+            x = self.x_grid(table["x"])
+        return tuple(seen), x
+
+    def x_grid(self, value) -> XGrid:
+        allowed = "{ start = X0, stop = X1, num = N } with X0 < X1 and 2 <= N <= 1000000"
+        if not isinstance(value, dict):
+            raise self.error("outputs.x", f"must be a table, got {_describe(value)}", allowed)
+        self.check_keys(value, X_KEYS, "outputs.x")
+        for k in X_KEYS:
+            if k not in value:
+                raise self.error(f"outputs.x.{k}", "is missing", allowed)
+        start = self.number("outputs.x.start", value["start"], allowed)
+        stop = self.number("outputs.x.stop", value["stop"], allowed)
+        num = value["num"]
+        if isinstance(num, bool) or not isinstance(num, int) or not 2 <= num <= 1_000_000:
+            raise self.error("outputs.x.num", f"must be an integer in [2, 1000000], got "
+                             f"{_describe(num)}", allowed)
+        if not start < stop:
+            raise self.error("outputs.x", f"start = {start!r} is not below stop = {stop!r}",
+                             allowed)
+        return XGrid(start, stop, num)
+
+    def numerics(self, table: dict, kind: str) -> Numerics:
+        self.check_keys(table, NUMERICS_KEYS, "numerics")
+        method = table.get("method", "numeric")
+        if method not in METHODS:
+            raise self.error("numerics.method", f"unknown method {method!r}",
+                             " | ".join(repr(m) for m in METHODS))
+        if method == "closed_form" and kind == "profile":
+            raise self.error("numerics.method", "closed_form exists only for the four classical "
+                             "punches, not for a profile", '"numeric" for a profile punch')
+        if "n" in table and "tol" in table:
+            raise self.error("numerics.n", "given together with numerics.tol",
+                             "either n (fixed) or tol (n chosen adaptively)")
+        n = table.get("n")
+        if n is not None and (isinstance(n, bool) or not isinstance(n, int)
+                              or not 2 <= n <= 100_000):
+            raise self.error("numerics.n", f"must be an integer in [2, 100000], got "
+                             f"{_describe(n)}", "an integer in [2, 100000]")
+        tol = table.get("tol", 1e-12)
+        tol = self.number("numerics.tol", tol, "a number in (0, 1)")
+        if not 0 < tol < 1:
+            raise self.error("numerics.tol", f"must be in (0, 1), got {tol!r}",
+                             "a number in (0, 1)")
+        return Numerics(method, n, tol)
+
+    # ---- checks that need the physics (cheap: no contact problem is solved) ----
+    def check_cases(self, scene: Scene):
+        material = scene.material.build()
+        c_R = contact.rayleigh_speed(material)
+        key = "motion.velocity" if "velocity" in scene.motion else "motion.speed"
+        for case in scene.cases():
+            c = case.speed
+            if not c < c_R:
+                shown = (f"velocity = {case.inputs['velocity']!r} (relative speed c = {c!r})"
+                         if "velocity" in case.inputs else f"{c!r}")
+                raise self.error(key, f"{shown} is not below the Rayleigh speed of this material, "
+                                 f"c_R = {c_R!r}", f"0 <= speed < c_R = {c_R:.10g}")
+            self.check_punch(case.punch)
+
+    def check_punch(self, spec: PunchSpec):
+        try:
+            punch = spec.build()
+        except contact.ContactInputError as exc:
+            key = f"punch.{spec.dimension_key}" if spec.dimension_key else "punch"
+            raise self.error(key, str(exc)) from None
+        if spec.kind == "profile":
+            lo, hi = _probe_range(punch)
+            try:
+                punch.slope(np.linspace(lo, hi, 7))
+            except Exception as exc:               # user code: any failure is a scene error
+                raise self.error("punch.slope", f"{exc} (probed at X in [{lo:g}, {hi:g}])",
+                                 "a vectorised function returning finite real dv/dX "
+                                 "of the same shape as X") from None
+
+
+def _probe_range(punch) -> tuple:
+    xs = [c for c in punch.corners if c is not None] + list(punch.breaks)
+    if not xs:
+        return -1.0, 1.0
+    lo, hi = min(xs), max(xs)
+    pad = max(1.0, hi - lo)
+    return lo - pad, hi + pad
+
+
+def _default_title(punch: dict) -> str:
+    kind = punch["kind"]
+    dims = PUNCH_DIMENSIONS[kind]
+    if not dims or isinstance(punch[dims[0]], tuple):
+        return f"{kind} punch"
+    return f"{kind} punch, {dims[0]} = {punch[dims[0]]:g}"
+
+
+def _describe(value) -> str:
+    kinds = {bool: "boolean", int: "integer", float: "float", str: "string", list: "list",
+             dict: "table"}
+    name = kinds.get(type(value), type(value).__name__)
+    if value is None:
+        return "nothing"
+    if isinstance(value, (dict, list)):
+        return f"a {name}"
+    return f"{name} {value!r}"

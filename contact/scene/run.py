@@ -1,0 +1,257 @@
+"""Running scenes: one case at a time, in order, serially or through any Executor."""
+from __future__ import annotations
+
+import functools
+import math
+import sys
+import time
+import warnings
+from concurrent.futures import Executor, as_completed
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+
+import numpy as np
+
+import contact
+import sie
+
+from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, MaterialSpec,
+                   SPEED_FIELDS, Scene, UNITS, _fmt)
+
+
+# --------------------------------------------------------------------------
+# running
+# --------------------------------------------------------------------------
+@dataclass
+class CaseResult:
+    """What one case produced: the JSON entry (inputs, then the requested fields in the
+    scene's order, curves as numpy arrays), the solve time and any warnings."""
+    index: int
+    label: str
+    entry: dict
+    time_s: float
+    warnings: list = field(default_factory=list)
+
+    def curve(self, name):
+        """(x, values) of a sampled curve field."""
+        c = self.entry[name]
+        return c["x"], c["values"]
+
+
+@dataclass
+class SceneResult:
+    """All cases of a scene, in scene order."""
+    scene: Scene
+    cases: list
+    timing_s: float
+    warnings: list = field(default_factory=list)
+
+    @property
+    def curve_fields(self):
+        return [f for f in self.scene.fields if f in CURVE_FIELDS]
+
+    def to_json(self) -> dict:
+        """The content of result.json."""
+        return {"scene": self.scene.echo(),
+                "scene_file": self.scene.source,
+                "cases": [_json_entry(c.entry) for c in self.cases],
+                "version": _version(),
+                "timing_s": self.timing_s,
+                "units": UNITS,
+                "warnings": list(self.warnings)}
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version("sie-contact")
+    except PackageNotFoundError:             # pragma: no cover - running from a bare checkout
+        return "unknown"
+
+
+def _json_entry(entry: dict) -> dict:
+    out = {}
+    for k, v in entry.items():
+        if isinstance(v, dict) and "values" in v:
+            v = {"x": v["x"].tolist(), "values": [None if not math.isfinite(y) else y
+                                                  for y in v["values"].tolist()]}
+        out[k] = v
+    return out
+
+
+@functools.lru_cache(maxsize=256)
+def _shared_constants(material, speed):
+    """surface_constants once per (material, speed) in each process (serial runs and each
+    worker of a pool share them across the sweep)."""
+    return contact.surface_constants(material, speed)
+
+
+def run_case(case: Case) -> CaseResult:
+    """Solve one case and compute its requested per-case fields (not roots/constants, which
+    :func:`run_scene` computes once per speed).  Runs in a worker process or Dask worker."""
+    t0 = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        material = case.material.build()
+        result = contact.solve(material, case.punch.build(),
+                               load=case.inputs["load"], speed=case.speed,
+                               friction=case.inputs["friction"],
+                               direction=case.inputs["direction"], method=case.numerics.method,
+                               n=case.numerics.n, tol=case.numerics.tol,
+                               constants=_shared_constants(material, case.speed))
+        entry = {"inputs": dict(case.inputs)}
+        X = None
+        for name in case.fields:
+            if name == "ends":
+                entry["ends"] = [result.ends[0], result.ends[1]]
+            elif name == "exponents":
+                entry["exponents"] = [result.alpha, result.beta]
+            elif name == "sif":
+                entry["sif"] = dict(result.sif)
+            elif name in CURVE_FIELDS:
+                if X is None:
+                    X = case.x.points() if case.x is not None else _auto_x(result)
+                entry[name] = {"x": X, "values": _sample(result, name, X)}
+    return CaseResult(case.index, case.label, entry, time.perf_counter() - t0,
+                      [f"{w.category.__name__}: {w.message}" for w in caught])
+
+
+def _auto_x(result) -> np.ndarray:
+    xl, xr = result.ends
+    pad = AUTO_X_MARGIN * (xr - xl)
+    return np.linspace(xl - pad, xr + pad, AUTO_X_POINTS)
+
+
+def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
+    """A curve field at X; NaN at a singular contact end, where it is infinite."""
+    s = (X - result.center) / result.half_width          # as ContactResult does
+    finite = np.ones(X.shape, dtype=bool)
+    if result.alpha < 0:
+        finite &= s != 1.0
+    if result.beta < 0:
+        finite &= s != -1.0
+    values = np.full(X.shape, np.nan)
+    values[finite] = getattr(result, name)(X[finite])
+    return values
+
+
+def speed_fields(material: MaterialSpec, speeds, fields) -> dict:
+    """Roots and/or surface constants once per distinct speed: {speed: {field: value}}."""
+    wanted = [f for f in fields if f in SPEED_FIELDS]
+    if not wanted:
+        return {}
+    m = material.build()
+    out = {}
+    for c in dict.fromkeys(speeds):
+        out[c] = {}
+        if "constants" in wanted:
+            k = contact.surface_constants(m, c)
+            out[c]["constants"] = {"N11": k.N11, "N12": k.N12, "N21": k.N21, "N22": k.N22,
+                                   "rayleigh_speed": k.rayleigh_speed,
+                                   "eta_product": k.eta_product, "eta_sum": k.eta_sum}
+        if "roots" in wanted:
+            r = m.characteristic_roots(c)
+            out[c]["roots"] = {"real": (r.real + 0.0).tolist(), "imag": (r.imag + 0.0).tolist()}
+    return out
+
+
+def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
+              ) -> SceneResult:
+    """Run every case of a scene, in scene order.
+
+    Parameters
+    ----------
+    scene : Scene
+    executor : concurrent.futures.Executor, optional
+        Where cases are solved (a ProcessPoolExecutor, or a Dask ``Client.get_executor()``);
+        None: in this process, one after the other.  Results are the same either way.  Cases
+        are plain data rebuilt where they run: the workers must be able to import ``contact``
+        (and a profile's "module:function", looked up in the scene's directory first).
+    progress : bool
+        Show a tqdm progress bar (on stderr) if the run takes longer than about a second.
+
+    Raises
+    ------
+    CaseError
+        If a case fails in the library (e.g. the profile would lose contact); the message
+        names the case.
+    """
+    cases = scene.cases()
+    t0 = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        shared = speed_fields(scene.material, [c.speed for c in cases], scene.fields)
+    results = _map_in_order(run_case, cases, executor, progress, scene)
+    for res, case in zip(results, cases):
+        if case.speed in shared:
+            per_speed = shared[case.speed]
+            res.entry = {k: res.entry[k] if k in res.entry else per_speed[k]
+                         for k in ("inputs",) + scene.fields}
+    messages = list(dict.fromkeys(f"{w.category.__name__}: {w.message}" for w in caught))
+    for res in results:
+        messages += [f"case {res.index} ({res.label}): {w}" for w in res.warnings]
+    return SceneResult(scene, results, time.perf_counter() - t0, messages)
+
+
+def _map_in_order(fn, cases, executor, progress, scene):
+    """[fn(case) for case in cases], in this process or through ``executor``; the library's
+    input errors become a CaseError naming the case."""
+    bar = _progress_bar(len(cases), progress)
+    try:
+        if executor is None:
+            out = []
+            for case in cases:
+                with _naming(case, scene):
+                    out.append(fn(case))
+                bar.update(1)
+            return out
+        futures = [executor.submit(fn, case) for case in cases]
+        try:
+            for fut in as_completed(futures):
+                if fut.exception() is not None:
+                    break                        # report it below, in scene order
+                bar.update(1)
+            out = []
+            for fut, case in zip(futures, cases):
+                with _naming(case, scene):
+                    out.append(fut.result())
+            return out
+        finally:
+            for fut in futures:
+                fut.cancel()
+    finally:
+        bar.close()
+
+
+@contextmanager
+def _naming(case, scene):
+    """Re-raise the library's input errors (contact.ContactInputError, sie.SIEInputError) as a
+    CaseError that names the scene file and the case."""
+    try:
+        yield
+    except (contact.ContactInputError, sie.SIEInputError) as exc:
+        raise CaseError(f"{scene.source}: case {case.index} ({_inputs_text(case.inputs)}): "
+                        f"{type(exc).__name__}: {exc}") from exc
+
+
+def _inputs_text(inputs: dict) -> str:
+    return ", ".join(f"{k} = {_fmt(v)}" for k, v in inputs.items())
+
+
+class _NoBar:
+    def update(self, n=1):
+        pass
+
+    def close(self):
+        pass
+
+
+def _progress_bar(total, progress):
+    if not progress or total < 2:
+        return _NoBar()
+    try:
+        from tqdm import tqdm
+    except ImportError:                      # tqdm is a dependency; be lenient all the same
+        return _NoBar()
+    return tqdm(total=total, desc="cases", unit="case", delay=1.0, file=sys.stderr,
+                dynamic_ncols=True, leave=False)
