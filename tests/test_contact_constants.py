@@ -4,7 +4,8 @@ Conventions (paper-errata.md): half-space Y < 0, sigma_YY(X,0) = -p, tau_XY(X,0)
 Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt,
 dv/dX = N12 q + N11 Hc[p],  sigma_XX(X,0) = N21 p + N22 Hc[q].
 
-Independent references:
+Independent references (the computations live in ``validation/reference_constants.py``,
+shared with the report; none of them calls contact.constants):
   * classical static isotropic limits (errata file) and moving-isotropic closed forms written
     with the Rayleigh function R(c) = 4 a_d a_s - (2 - c^2)^2 (derived by hand, see
     ``isotropic_moving``); the isotropic nu = 1/4 Rayleigh speed sqrt(2 - 2/sqrt(3));
@@ -20,13 +21,11 @@ from __future__ import annotations
 import math
 import warnings
 
-import mpmath
 import numpy as np
 import pytest
-from mpmath import mp, mpf
+from mpmath import mpf
 from scipy.integrate import quad
 from scipy.optimize import brentq
-from scipy.special import dawsn
 
 from contact.constants import (
     SurfaceConstants,
@@ -38,6 +37,9 @@ from contact.constants import (
 )
 from contact.errors import NearRayleighWarning, SpeedError
 from contact.material import Isotropic, Orthotropic, zhou2014
+from validation.reference_constants import (eig_N, eig_transfer, hc_gaussian,
+                                            invert_gaussian, isotropic_moving, mp_eig_N,
+                                            rayleigh_eig, rayleigh_mp)
 
 PAPER = zhou2014()
 ISO = Isotropic(2.5, 0.25)                     # G = 1, lambda = 1, nu = 1/4
@@ -51,81 +53,6 @@ def _N(sc: SurfaceConstants) -> np.ndarray:
     return np.array([sc.N11, sc.N12, sc.N21, sc.N22])
 
 
-# ----------------------------------------------------------------------------------------
-# Independent reference 1: state-space solve at one wavenumber k
-# ----------------------------------------------------------------------------------------
-def _state_matrix(m, c, k, one, I):
-    """w = (U, V, tau, sigma) amplitudes of exp(i k X); w' = A w (d/dY).
-
-    tau = C33 (U' + i k V), sigma = i k C12 U + C22 V'  (constitutive law, eq. (2.2));
-    i k sigma_XX + tau' = -C33 c^2 k^2 U,  i k tau + sigma' = -C33 c^2 k^2 V  (eqs. (2.3)-(2.4)
-    in the moving frame, rho V^2 = C33 c^2).
-    """
-    C11, C12, C22, C33 = (one * x for x in (m.C11, m.C12, m.C22, m.C33))
-    c2, k = (one * c) ** 2, one * k
-    return [[0, -I * k, 1 / C33, 0],
-            [-I * k * C12 / C22, 0, 0, 1 / C22],
-            [k * k * (C11 - C12 ** 2 / C22 - C33 * c2), 0, 0, -I * k * C12 / C22],
-            [0, -C33 * c2 * k * k, -I * k, 0]]
-
-
-def _responses(W, m, k, one, I, solve):
-    """Surface (dv/dX, sigma_XX) for unit p (sigma_YY = -1) and unit q (tau_XY = -1)."""
-    out = []
-    for p_hat, q_hat in ((1, 0), (0, 1)):
-        a = solve([[W[2][0], W[2][1]], [W[3][0], W[3][1]]], [-q_hat, -p_hat])
-        U, V, _, sig = (W[r][0] * a[0] + W[r][1] * a[1] for r in range(4))
-        vx = I * k * V
-        sxx = I * k * m.C11 * U + m.C12 * (sig - I * k * m.C12 * U) / m.C22
-        out.append((vx, sxx))
-    return out
-
-
-def eig_transfer(m, c, k=1.0):
-    """Complex transfer functions at wavenumber k, numpy.linalg.eig route.
-
-    Returns (vx_p, sxx_p, vx_q, sxx_q): the Fourier amplitudes of dv/dX and sigma_XX(X,0)
-    per unit amplitude of p (q = 0) and of q (p = 0).
-    """
-    A = np.array(_state_matrix(m, c, k, 1.0, 1j), dtype=complex)
-    mu, vecs = np.linalg.eig(A)
-    keep = mu.real > 0                          # exp(|k| eta Y) decays as Y -> -inf
-    assert keep.sum() == 2
-    W = vecs[:, keep]
-    (vx_p, sxx_p), (vx_q, sxx_q) = _responses(
-        W, m, k, 1.0, 1j, lambda M, r: np.linalg.solve(np.array(M), np.array(r, dtype=complex)))
-    return vx_p, sxx_p, vx_q, sxx_q
-
-
-def N_from_transfer(t, k):
-    """dv/dX^ = N12 q^ + N11 (i sgn k) p^, sigma_XX^ = N21 p^ + N22 (i sgn k) q^."""
-    vx_p, sxx_p, vx_q, sxx_q = t
-    h = 1j * np.sign(k)                         # Fourier multiplier of Hc
-    return np.array([vx_p / h, vx_q, sxx_p, sxx_q / h])
-
-
-def eig_N(m, c, k=1.0):
-    return N_from_transfer(eig_transfer(m, c, k), k)
-
-
-def mp_eig_N(m, c, dps=40):
-    """Same route with mpmath.eig at ``dps`` digits (for nearly repeated roots)."""
-    with mp.workdps(dps):
-        one, I = mpf(1), mpmath.mpc(0, 1)
-        A = mpmath.matrix(_state_matrix(m, c, 1, one, I))
-        mu, vecs = mp.eig(A)
-        cols = [j for j in range(4) if mpmath.re(mu[j]) > 0]
-        assert len(cols) == 2
-        W = [[vecs[r, j] for j in cols] for r in range(4)]
-        (vx_p, sxx_p), (vx_q, sxx_q) = _responses(
-            W, m, 1, one, I,
-            lambda M, r: list(mpmath.lu_solve(mpmath.matrix(M), mpmath.matrix(r))))
-        N = [vx_p / I, vx_q, sxx_p, sxx_q / I]
-        # a double root makes the two decaying eigenvectors parallel: ~dps/2 digits left
-        assert max(abs(mpmath.im(z)) for z in N) < mpf(10) ** (-dps // 2 + 2)
-        return np.array([float(mpmath.re(z)) for z in N])
-
-
 def assert_rel(got, want, rtol):
     got, want = np.asarray(got), np.asarray(want)
     err = np.abs(got - want) / np.abs(want)
@@ -135,28 +62,6 @@ def assert_rel(got, want, rtol):
 # ----------------------------------------------------------------------------------------
 # Classical isotropic limits
 # ----------------------------------------------------------------------------------------
-def isotropic_moving(G, nu, c):
-    """Moving isotropic plane strain, derived by hand from the general formula:
-
-    k^2 = (1 - 2nu) / (2(1 - nu)), a_d = sqrt(1 - k^2 c^2), a_s = sqrt(1 - c^2),
-    R = 4 a_d a_s - (2 - c^2)^2,
-    N11 = -c^2 a_d / (G R),               N12 = (2 - c^2 - 2 a_d a_s) / (G R),
-    N21 = -(4 a_d (a_d - a_s) - (1 - 2k^2) c^4) / R,   N22 = -4 (1 - k^2) c^2 a_s / R.
-
-    Evaluated in mpmath at 40 digits: R = O(c^2) cancels in double precision at small c.
-    """
-    with mp.workdps(40):
-        G, nu, c = mpf(G), mpf(nu), mpf(c)
-        k2 = (1 - 2 * nu) / (2 * (1 - nu))
-        ad, as_ = mpmath.sqrt(1 - k2 * c * c), mpmath.sqrt(1 - c * c)
-        R = 4 * ad * as_ - (2 - c * c) ** 2
-        N = [-c * c * ad / (G * R),
-             (2 - c * c - 2 * ad * as_) / (G * R),
-             -(4 * ad * (ad - as_) - (1 - 2 * k2) * c ** 4) / R,
-             -4 * (1 - k2) * c * c * as_ / R]
-        return np.array([float(x) for x in N])
-
-
 @pytest.mark.parametrize("E,nu", [(2.5, 0.25), (1.0, 0.3), (7.0, 0.0), (2.0, -0.6), (1.0, 0.499)])
 def test_static_isotropic_limits(E, nu):
     G = E / (2 * (1 + nu))
@@ -330,25 +235,11 @@ def test_paper_appendix_loses_digits_near_isotropy():
 # ----------------------------------------------------------------------------------------
 # Independent reference 2: Fourier inversion of a Gaussian surface load
 # ----------------------------------------------------------------------------------------
-def hc_gaussian(x):
-    """Hc[exp(-t^2)](x) = (1/pi) PV int exp(-t^2)/(t - x) dt = -(2/sqrt(pi)) dawsn(x)."""
-    return -2.0 / math.sqrt(math.pi) * dawsn(x)
-
-
 @pytest.mark.parametrize("x", [0.0, 0.4, 1.3, 3.0])
 def test_hc_gaussian_closed_form_by_pv_quadrature(x):
     pv, _ = quad(lambda t: math.exp(-t * t), -12.0, 12.0, weight="cauchy", wvar=x,
                  epsabs=1e-14, epsrel=1e-13, limit=200)
     assert pv / math.pi == pytest.approx(hc_gaussian(x), rel=1e-11, abs=1e-14)
-
-
-def _invert(T_plus, T_minus, x):
-    """int_{-inf}^{inf} T(k) f^(k) e^{ikx} dk for f = exp(-X^2), f^(k) = e^{-k^2/4}/(2 sqrt(pi)),
-    T(k) = T_plus for k > 0 and T_minus for k < 0."""
-    fhat = lambda k: math.exp(-k * k / 4) / (2 * math.sqrt(math.pi))
-    cos_part, _ = quad(fhat, 0.0, 45.0, weight="cos", wvar=x, epsabs=1e-13, epsrel=1e-12)
-    sin_part, _ = quad(fhat, 0.0, 45.0, weight="sin", wvar=x, epsabs=1e-13, epsrel=1e-12)
-    return (T_plus + T_minus) * cos_part + 1j * (T_plus - T_minus) * sin_part
 
 
 @pytest.mark.parametrize("c", [0.0, 0.5, 0.9])
@@ -357,7 +248,7 @@ def test_gaussian_load_fourier_inversion(c):
     Tp, Tm = eig_transfer(PAPER, c, 1.0), eig_transfer(PAPER, c, -1.0)
     for x in (0.0, 0.35, 1.0, 2.2, -1.7):
         g, hg = math.exp(-x * x), hc_gaussian(x)
-        vx_p, sxx_p, vx_q, sxx_q = (_invert(Tp[j], Tm[j], x) for j in range(4))
+        vx_p, sxx_p, vx_q, sxx_q = (invert_gaussian(Tp[j], Tm[j], x) for j in range(4))
         for got in (vx_p, sxx_p, vx_q, sxx_q):
             assert abs(got.imag) < 1e-12
         # p = exp(-X^2), q = 0
@@ -371,37 +262,20 @@ def test_gaussian_load_fourier_inversion(c):
 # ----------------------------------------------------------------------------------------
 # Rayleigh speed and the speed range
 # ----------------------------------------------------------------------------------------
-def _eig_rayleigh(m, lo, hi):
-    """c in [lo, hi] where 1/N11 from the eig route crosses zero (simple pole of N11 at c_R).
-
-    brentq raises unless 1/N11 changes sign on the bracket, so a bracket taken around the
-    library's value is still an independent check."""
-    return brentq(lambda c: 1.0 / eig_N(m, c)[0].real, lo, hi,
-                  xtol=1e-300, rtol=4 * np.finfo(float).eps)
-
-
 def test_paper_rayleigh_speed():
     c_R = rayleigh_speed(PAPER)
     assert c_R == pytest.approx(0.9936, abs=5e-5)           # errata item 5
     assert limiting_speed(PAPER) == 1.0
-    assert c_R == pytest.approx(_eig_rayleigh(PAPER, 0.9, 0.99999), rel=1e-13)
-    with mp.workdps(40):                   # Delta's root at 40 digits
-        C11, C12, C22, C33 = (mpf(x) for x in (PAPER.C11, PAPER.C12, PAPER.C22, PAPER.C33))
-
-        def delta(c):
-            C11p = C11 - C33 * c * c
-            P = mpmath.sqrt((1 - c * c) * C11p / C22)
-            return P * (C22 * C11p - C12 ** 2) - C33 * c * c * C11p
-
-        ref = mpmath.findroot(delta, mpf("0.9936"))
-        assert abs(mpf(c_R) - ref) <= np.spacing(c_R)           # within one ulp
+    assert c_R == pytest.approx(rayleigh_eig(PAPER, 0.9, 0.99999), rel=1e-13)
+    ref = rayleigh_mp(PAPER, "0.9936")                     # Delta's root at 40 digits
+    assert abs(mpf(c_R) - ref) <= np.spacing(c_R)               # within one ulp
 
 
 @pytest.mark.parametrize("m", [ISO, COMPLEX, SOFT_C11, C12_MINUS_C33],
                          ids=["iso", "complex", "soft-C11", "C12=-C33"])
 def test_rayleigh_speed_matches_eig_route(m):
     c_R, c_L = rayleigh_speed(m), limiting_speed(m)
-    ref = _eig_rayleigh(m, 0.95 * c_R, min(1.02 * c_R, 0.5 * (c_R + c_L)))
+    ref = rayleigh_eig(m, 0.95 * c_R, min(1.02 * c_R, 0.5 * (c_R + c_L)))
     assert c_R == pytest.approx(ref, rel=1e-13)
 
 

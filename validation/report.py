@@ -9,7 +9,7 @@ minutes on 2 cores.
 
 Sections (Zhou, Lee & Jang, Arch. Mech. 66 (2014); errata in /work/shared/notes/paper-errata.md):
  1. Table 1 beside the printed values          (validation/report_paper.py)
- 2. kernel constants three ways, c_R           (validation/report_paper.py, report_constants.py)
+ 2. kernel constants three ways, c_R           (validation/report_paper.py, reference_constants.py)
  3. Figures 1-4 reproduced, printed vs corrected (validation/report_paper.py)
  4. closed forms vs the numeric path           (validation/report_numerics.py)
  5. convergence in n                           (validation/report_numerics.py)

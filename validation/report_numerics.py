@@ -781,7 +781,7 @@ def section_hard_cases(ctx):
     doc.table(["case", "punch", "alpha", "beta", "n", "error vs closed form", "load check", "condition",
                "time"], rows)
     # constants with nearly repeated roots: formula vs 40-digit eig
-    from . import report_constants as RC
+    from . import reference_constants as RC
     rows = []
     worst_k = 0.0
     for c in ((0.0,) if quick else (0.0, 1e-4, 0.5)):

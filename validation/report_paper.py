@@ -13,7 +13,7 @@ import numpy as np
 import contact
 from contact.constants import rayleigh_function, surface_constants
 
-from . import report_constants as RC
+from . import reference_constants as RC
 from .report_doc import fmt_err
 
 MAT = contact.zhou2014()
