@@ -27,6 +27,8 @@ import pytest
 from scipy.integrate import quad
 
 import contact
+from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, rounded_flat_slope,
+                                 w_slope)
 
 MAT = contact.zhou2014()
 C_R = contact.rayleigh_speed(MAT)
@@ -185,26 +187,13 @@ def test_numeric_solutions_are_physical(punch_name):
 # ------------------------------------------------------------------------------------------
 # 3. custom profiles: free ends found without a guess, convergence in n
 # ------------------------------------------------------------------------------------------
-def w_slope(X):
-    return 0.01 * (X ** 3 - X)
-
-
-def asym_slope(X):
-    return X / 100.0 + X ** 2 / 3000.0
-
-
-def rounded_slope(X):
-    X = np.asarray(X, dtype=float)
-    return np.where(X > 1.0, (X - 1.0) / 50.0, np.where(X < -1.0, (X + 1.0) / 50.0, 0.0))
-
-
 CUSTOM = {
     # name: (punch factory, load, speed, friction)
     "W": (lambda: contact.ProfilePunch(w_slope), 0.2, 0.3, 0.3),
-    "asym": (lambda: contact.ProfilePunch(asym_slope), 0.01, 0.3, 0.0),
-    "asym_mu": (lambda: contact.ProfilePunch(asym_slope), 0.01, 0.3, 0.3),
-    "rounded": (lambda: contact.ProfilePunch(rounded_slope, breaks=(-1.0, 1.0)), 0.05, 0.3, 0.3),
-    "rounded_nobreaks": (lambda: contact.ProfilePunch(rounded_slope), 0.05, 0.3, 0.3),
+    "asym": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.0),
+    "asym_mu": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.3),
+    "rounded": (lambda: contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS), 0.05, 0.3, 0.3),
+    "rounded_nobreaks": (lambda: contact.ProfilePunch(rounded_flat_slope), 0.05, 0.3, 0.3),
 }
 
 

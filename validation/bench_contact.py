@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 import contact
+from validation.profiles import ROUNDED_FLAT_BREAKS, rounded_flat_slope, w_slope
 
 OUT = Path(__file__).resolve().parent / "out"
 
@@ -55,9 +56,8 @@ def main():
                   max(abs(r.ends[0] - xl), abs(r.ends[1] - xr)) / (xr - xl))
         lines.append(f"| {name} punch, c=0.6, mu=0.3 (default n) | {t*1e3:.2f} | < 1 ms "
                      f"{'PASS' if t < 1e-3 else 'FAIL'} | {err:.1e} |")
-    rflat = contact.ProfilePunch(
-        lambda X: np.where(X > 1, (X - 1) / 50, np.where(X < -1, (X + 1) / 50, 0.0)), breaks=(-1, 1))
-    w = contact.ProfilePunch(lambda X: 0.01 * (X ** 3 - X))
+    rflat = contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS)
+    w = contact.ProfilePunch(w_slope)
     for name, p, load in (("rounded flat punch (breaks), free ends", rflat, 0.05),
                           ("W profile, free ends", w, 0.2)):
         t = best(lambda: contact.solve(mat, p, load=load, speed=0.6, friction=0.3), repeat=3)

@@ -13,6 +13,8 @@ import numpy as np
 import contact
 import sie
 
+from .profiles import (HYP_D, ROUNDED_FLAT_BREAKS, asymmetric_slope, exp_wedge_slope,
+                       hyperbolic_tip_slope, rounded_flat_slope, w_slope)
 from .report_doc import fmt_err, fmt_num, fmt_t
 
 MAT = contact.zhou2014()
@@ -137,42 +139,18 @@ def section_closed_forms(ctx):
 # ------------------------------------------------------------------------------------------
 # 5. convergence
 # ------------------------------------------------------------------------------------------
-def _w_slope(X):
-    return 0.01 * (X ** 3 - X)
-
-
-def _asym_slope(X):
-    return X / 100.0 + X ** 2 / 3000.0
-
-
-def _rounded_slope(X):
-    X = np.asarray(X, dtype=float)
-    return np.where(X > 1.0, (X - 1.0) / 50.0, np.where(X < -1.0, (X + 1.0) / 50.0, 0.0))
-
-
-HYP_D = 0.05
-
-
-def _hyp_slope(X):
-    return 0.01 * X / np.sqrt(X * X + HYP_D * HYP_D)
-
-
-def _exp_slope(X):
-    return 0.01 * np.exp(X)
-
-
 CUSTOM = {
     # name: (punch factory, load, speed, friction, reference key, description)
-    "W": (lambda: contact.ProfilePunch(_w_slope), 0.2, 0.3, 0.3, "W",
+    "W": (lambda: contact.ProfilePunch(w_slope), 0.2, 0.3, 0.3, "W",
           "W profile, slope 0.01 (X^3 - X), load 0.2 (two pressure peaks)"),
-    "asymmetric": (lambda: contact.ProfilePunch(_asym_slope), 0.01, 0.3, 0.3, "asymmetric",
+    "asymmetric": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.3, "asymmetric",
                    "asymmetric, slope X/100 + X^2/3000, load 0.01"),
-    "rounded flat, breaks": (lambda: contact.ProfilePunch(_rounded_slope, breaks=(-1.0, 1.0)), 0.05, 0.3,
+    "rounded flat, breaks": (lambda: contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS), 0.05, 0.3,
                              0.3, "rounded flat, breaks",
                              "rounded flat, slope 0 on |X| <= 1, (X -+ 1)/50 beyond, load 0.05, breaks = (-1, 1)"),
-    "rounded flat, no breaks": (lambda: contact.ProfilePunch(_rounded_slope), 0.05, 0.3, 0.3,
+    "rounded flat, no breaks": (lambda: contact.ProfilePunch(rounded_flat_slope), 0.05, 0.3, 0.3,
                                 "rounded flat, breaks", "the same without breaks"),
-    "hyperbolic tip": (lambda: contact.ProfilePunch(_hyp_slope), 0.02, 0.3, 0.3, "hyperbolic tip",
+    "hyperbolic tip": (lambda: contact.ProfilePunch(hyperbolic_tip_slope), 0.02, 0.3, 0.3, "hyperbolic tip",
                        f"added: rounded wedge v = 0.01 sqrt(X^2 + {HYP_D:g}^2), analytic but not a polynomial "
                        f"(branch points at +-{HYP_D:g}i), load 0.02"),
 }
@@ -433,9 +411,9 @@ def _contact_wp(ctx):
     scipy-based baseline, on a one-corner and a two-free-end profile."""
     quick = ctx.quick
     cases = {
-        "exp wedge (corner at 0, index 0)": (_exp_slope, True, 0.15, 0.6, 0.3,
+        "exp wedge (corner at 0, index 0)": (exp_wedge_slope, True, 0.15, 0.6, 0.3,
                                              "slope 0.01 exp(X), corner at X = 0, P = 0.15, c = 0.6, mu = 0.3"),
-        "hyperbolic tip (two free ends, index -1)": (_hyp_slope, False, 0.02, 0.3, 0.3,
+        "hyperbolic tip (two free ends, index -1)": (hyperbolic_tip_slope, False, 0.02, 0.3, 0.3,
                                                      f"slope 0.01 X/sqrt(X^2 + {HYP_D:g}^2), P = 0.02, c = 0.3, mu = 0.3"),
     }
     ns = (2, 4, 8, 16, 32) if quick else (2, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)
