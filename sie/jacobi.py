@@ -29,6 +29,8 @@ def _vandermonde(n, a, b, x):
     """
     m = x.shape[0]
     V = np.empty((m, n))
+    if n == 0:
+        return V
     for i in range(m):
         V[i, 0] = 1.0
     if n > 1:
