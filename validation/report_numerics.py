@@ -593,7 +593,9 @@ def section_work_precision(ctx):
           "`BaselineContact` in validation/report_numerics.py, the same equations solved the classic "
           "way: scipy `roots_jacobi` nodes (computed once per n, timed), EGC collocation with a dense "
           "solve per trial contact, `scipy.optimize.brentq` on the load for the contact size and, for two "
-          "free ends, an inner brentq on the solvability condition for the centre. Reference: "
+          "free ends, an inner brentq on the solvability condition for the centre. The baseline's "
+          "brackets are built around the reference contact size, a head start `contact.solve` does not "
+          "get (it starts from the load and the profile alone). Reference: "
           "`contact.solve` at a large n (the baseline's own large-n error shows that the reference is "
           "independent of our discretisation).")
     contact_lines = []
