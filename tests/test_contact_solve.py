@@ -27,8 +27,8 @@ import pytest
 from scipy.integrate import quad
 
 import contact
-from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, rounded_flat_slope,
-                                 w_slope)
+from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, hyperbolic_tip_slope,
+                                 rounded_flat_slope, w_slope)
 
 MAT = contact.zhou2014()
 C_R = contact.rayleigh_speed(MAT)
@@ -526,6 +526,32 @@ def test_adaptive_cylindrical_large_load_keeps_accuracy():
         L = rc.ends[1] - rc.ends[0]
         err = max(abs(rn.ends[0] - rc.ends[0]), abs(rn.ends[1] - rc.ends[1])) / L
         assert err <= 1e-13, (load, err, rn.n)
+
+
+def test_adaptive_n_warns_with_the_remedy_when_tol_is_not_reached():
+    """A kinked face without breaks converges algebraically: the adaptive loop stops at its cap
+    and says so, naming both remedies (breaks= for a kink, a larger n= for a short scale)."""
+    punch = contact.ProfilePunch(rounded_flat_slope)
+    with pytest.warns(RuntimeWarning, match=r"breaks=.*|n=") as rec:
+        r = contact.solve(MAT, punch, load=0.05, speed=0.3, friction=0.3)
+    msg = str(rec[0].message)
+    assert "breaks=" in msg and "larger n=" in msg and f"n = {r.n}" in msg
+
+
+def test_adaptive_n_reaches_a_short_length_scale():
+    """Hyperbolic tip with a contact ~30 tip radii wide: the series converges geometrically
+    but slowly (rate ~ radius / half-width); the adaptive n must get there (n in the
+    thousands) without a warning, and agree with an explicit large n."""
+    punch = contact.ProfilePunch(hyperbolic_tip_slope)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        r = contact.solve(MAT, punch, load=0.2, speed=0.5, friction=0.3, tol=1e-10)
+    ref = contact.solve(MAT, punch, load=0.2, speed=0.5, friction=0.3, n=6144)
+    L = ref.ends[1] - ref.ends[0]
+    assert r.n >= 1024
+    assert max(abs(r.ends[0] - ref.ends[0]), abs(r.ends[1] - ref.ends[1])) / L <= 1e-12
+    X = interior(ref.ends)
+    assert np.max(np.abs(r.pressure(X) - ref.pressure(X))) / np.max(ref.pressure(X)) <= 1e-9
 
 
 # ------------------------------------------------------------------------------------------
