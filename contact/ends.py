@@ -50,7 +50,10 @@ class _Problem:
         """
         h = 0.5 * (xr - xl)
         m = 0.5 * (xr + xl)
-        slope = self.punch.slope if checked else self.punch._slope
+        punch = self.punch
+        # the raw slope only where it is safe: a subclass that overrides slope() itself keeps it
+        raw = type(punch).slope is Punch.slope
+        slope = punch._slope if raw and not checked else punch.slope
         br = [(x - m) / h for x in self.punch.breaks if xl < x < xr]
         br = [s for s in br if abs(s) < 1.0 - 1e-12]
         return h, (lambda s: slope(h * s + m)), br
@@ -79,7 +82,14 @@ class _Problem:
         def run(h, f, br):
             total = self.load / h if self.punch.kappa == 1 else None
             return sie.solve(f, n=n, total=total, breaks=br, **self._sie_kw())
-        return self._run(xl, xr, run)
+        # the checked slope: the solution keeps f and calls it again later (the remainder of
+        # a solution with breaks is built on first use), outside _run's error translation
+        try:
+            return run(*self._equation(xl, xr, checked=True))
+        except CallableOutputError as exc:
+            if isinstance(exc.__cause__, ContactInputError):
+                raise exc.__cause__ from None
+            raise
 
     def functionals_on(self, xl, xr):
         """(load carried, solvability residual) on [xl, xr], without forming the solution

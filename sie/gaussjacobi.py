@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 
 import numpy as np
 
@@ -57,6 +58,7 @@ N_RECURRENCE_MAX = 100  # rung 2 up to here
 N_BOUNDARY = 10         # nodes per end done by recurrence on rung 3
 _ASY_MAX_PARAM = 5.0    # Hahn's expansion coefficients grow with |alpha|, |beta|
 _M_MAX = 40             # cap on the number of terms of the interior expansion
+_X_INSIDE = float(np.nextafter(1.0, 0.0))   # the largest double below 1
 _NEWTON_MAX = 12
 
 
@@ -77,7 +79,10 @@ _NEWTON_MAX = 12
 def _newton_recurrence(n, a, b, theta):
     """Newton in theta on P_n^{(a,b)}(cos theta) via the recurrence in t = 2 sin^2(theta/2).
 
-    Returns the refined angles and Q_{n-1} = P_{n-1}/P_{n-1}(1) at them.
+    Returns the refined angles, Q_{n-1} = P_{n-1}/P_{n-1}(1) at them, and the growth
+    max_k |Q_k| / |Q_{n-1}|: the compensated sums carry ~32 digits of the largest partial
+    sum, so ~1e-32 times the growth is the relative accuracy left in Q_{n-1} (and twice
+    that in the weight).  Large exponents make Q_{n-1} ~ n^{-a} a! tiny in the interior.
     dP_n/dtheta = -sin(theta) P_n'(x) and, from DLMF 18.9.17,
     (2n+a+b)(1-x^2) P_n' = n[(a-b) - (2n+a+b)x] P_n + 2(n+a)(n+b) P_{n-1};
     divided by P_n(1), with P_{n-1}(1)/P_n(1) = n/(n+a):
@@ -91,13 +96,17 @@ def _newton_recurrence(n, a, b, theta):
     kernel with scalar loops, no array expressions: numba compiles it ~4x faster than
     a separate recurrence kernel written with array arithmetic.)
     """
-    # Bt_k, Ct_k of the block comment above, k = 1..n-1
+    # Bt_k, Ct_k of the block comment above, k = 1..n-1.  With both exponents near -1,
+    # s = 2k + a + b at k = 1 is ~(a+1) + (b+1): formed from a+1 and b+1 (exact there),
+    # not as (2 + a) + b, which would leave it (and every weight) 1e-8 off at a, b = -1 + 1e-8.
     Bt = np.empty(n)
     Ct = np.empty(n)
+    ap1 = a + 1.0
+    abp2 = ap1 + (b + 1.0)
     for k in range(1, n):
-        s = 2.0 * k + a + b
-        Bt[k] = (s + 1.0) * (s + 2.0) / (2.0 * (k + a + b + 1.0) * (k + a + 1.0))
-        Ct[k] = k * (k + b) * (s + 2.0) / ((k + a + b + 1.0) * s * (k + a + 1.0))
+        s = 2.0 * (k - 1) + abp2
+        Bt[k] = (s + 1.0) * (s + 2.0) / (2.0 * ((k - 1) + abp2) * (k + ap1))
+        Ct[k] = k * ((k - 1) + (b + 1.0)) * (s + 2.0) / (((k - 1) + abp2) * s * (k + ap1))
     th = theta.copy()
     m = th.shape[0]
     t = np.empty(m)
@@ -106,8 +115,9 @@ def _newton_recurrence(n, a, b, theta):
     e = np.empty(m)
     q_prev = np.empty(m)
     lo_prev = np.empty(m)
+    big = np.empty(m)
     c2 = 2.0 * n + a + b
-    e1 = -(a + b + 2.0) / (2.0 * (a + 1.0))
+    e1 = -abp2 / (2.0 * ap1)
     converged = False
     for it in range(_NEWTON_MAX + 1):
         for i in range(m):
@@ -118,6 +128,7 @@ def _newton_recurrence(n, a, b, theta):
             e[i] = e1 * t[i]
             q[i] = 1.0 + e[i]
             lo[i] = (1.0 - q[i]) + e[i]
+            big[i] = max(1.0, abs(q[i]))
         for k in range(1, n):
             Bk = Bt[k]
             Ck = Ct[k]
@@ -130,6 +141,8 @@ def _newton_recurrence(n, a, b, theta):
                 bb = s - q[i]
                 lo[i] += (q[i] - (s - bb)) + (ei - bb)
                 q[i] = s
+                if abs(s) > big[i]:
+                    big[i] = abs(s)
         if converged or it == _NEWTON_MAX:
             break
         biggest = 0.0
@@ -147,7 +160,8 @@ def _newton_recurrence(n, a, b, theta):
         converged = biggest < 1e-15
     for i in range(m):
         q_prev[i] += lo_prev[i]
-    return th, q_prev
+        big[i] /= abs(q_prev[i])
+    return th, q_prev, big
 
 
 # --------------------------------------------------------------------------
@@ -160,14 +174,25 @@ def _newton_recurrence(n, a, b, theta):
 # --------------------------------------------------------------------------
 @jit()
 def _newton_boundary(n, a, b, theta):
-    """Newton in theta on the dd series; returns the angles and dQ_n/dt at them.
+    """Newton in t = 1 - x on the dd series; returns the angles and dQ_n/dt at them.
 
     The term ratios rho_k = (k-n)(k+n+1+a+b) / ((k+1+a)(k+1)) do not depend on t:
-    they are formed once (as far as the series reach), in dd, and each evaluation of the series costs two dd
-    products per term for T_{k+1} = T_k rho_k (t/2) plus the sums
-    S = sum T_k (= Q_n),  S1 = sum k T_k (= t Q_n'),  S2 = sum k(k-1) T_k (= t^2 Q_n'').
-    S2 only moves Q_n' from the last iterate to the root (a relative change below
-    ~1e-13), so it is summed in double precision.
+    they are formed once (as far as the series reach), in dd, and each evaluation of the
+    series costs two dd products per term for T_{k+1} = T_k rho_k (t/2) plus the sums
+    S = sum T_k (= Q_n),  S1 = sum k T_k (= t Q_n'),  S2 = sum k(k-1) T_k (= t^2 Q_n''),
+    all three in dd (S2 cancels like S).
+
+    Newton runs in t, not theta: next to x = 1, Q_n is nearly linear in t, so a start far
+    to the right of the first root (an exponent near -1 puts it ~sqrt(a+1) closer to the
+    end than the asymptotic estimates) converges in a few steps, where Newton in theta
+    only halves the error per step.  It stops within an ulp of the root, or when the steps
+    stop shrinking at the series' noise floor (large exponents: e^{rho theta} cancels more
+    than dd holds).  The derivative is then moved from the last iterate to the root,
+    Q'(t*) = Q'(t) - Q''(t) Q(t)/Q'(t), without another evaluation.
+
+    Third value: whether dd was enough, i.e. the largest term over |S1| (the cancellation
+    in Q') stays below 1e16, so that Q' keeps ~16 digits.  Large exponents (a ~ 20 and up)
+    break this at the outer boundary nodes; the caller then uses the recurrence there.
     """
     rh = np.empty(n)
     rl = np.empty(n)
@@ -176,18 +201,20 @@ def _newton_boundary(n, a, b, theta):
     th = theta.copy()
     m = th.shape[0]
     dqt = np.empty(m)
+    ok = np.empty(m, dtype=np.bool_)
     for i in range(m):
-        x = th[i]
-        q = 0.0
+        sh = math.sin(0.5 * th[i])
+        t = max(2.0 * sh * sh, 1e-300)     # t = 0 (a clipped start): Newton's first step is
+        q = 0.0                            # then the linearisation of Q_n at the end
         dq = 1.0
         d2q = 0.0
+        prev = math.inf
         for it in range(_NEWTON_MAX):
-            sh = math.sin(0.5 * x)
-            u = sh * sh                     # t/2, t = 2 sin^2(theta/2) = 1 - cos(theta)
+            u = 0.5 * t
             Th, Tl = 1.0, 0.0               # T_0
             Sh, Sl = 1.0, 0.0
             S1h, S1l = 0.0, 0.0
-            s2 = 0.0
+            S2h, S2l = 0.0, 0.0
             peak = 1.0
             for k in range(n):
                 if k == filled:
@@ -203,25 +230,34 @@ def _newton_boundary(n, a, b, theta):
                 Sh, Sl = dd_add(Sh, Sl, Th, Tl)
                 vh, vl = dd_mul(Th, Tl, kk, 0.0)
                 S1h, S1l = dd_add(S1h, S1l, vh, vl)
-                s2 += kk * (kk - 1.0) * Th
+                vh, vl = dd_mul(vh, vl, kk - 1.0, 0.0)
+                S2h, S2l = dd_add(S2h, S2l, vh, vl)
                 at = abs(Th)
                 if at > peak:
                     peak = at
                 if at < 1e-34 * peak and kk > 2.0:
                     break
-            t = 2.0 * u
             q = Sh + Sl
             dq = (S1h + S1l) / t
-            d2q = s2 / (t * t)
-            # dQ/dtheta = Q'(t) sin(theta)
-            step = q / (dq * math.sin(x))
-            x -= step
-            if abs(step) <= 2.5e-16 * x:    # within an ulp: the root in double precision
+            d2q = (S2h + S2l) / (t * t)
+            dt = q / dq
+            t_new = t - dt
+            if t_new <= 0.0:
+                # overshot past the end (a start far right of the first root): the chord
+                # through Q(0) = 1 and Q(t) < 0, exact when Q is linear in t there
+                t_new = t / (1.0 - q) if q < 0.0 else 0.5 * t
+                dt = t - t_new
+            t = t_new
+            step = abs(dt)
+            if step <= 5e-16 * t:           # within an ulp of the root
                 break
-        # move the derivative from the last iterate to the root: Q'(t*) = Q'(t) + Q''(t)(t* - t)
+            if step < 1e-9 * t and step > 0.5 * prev:
+                break                       # steps no longer shrink: the series' noise floor
+            prev = step
         dqt[i] = dq - d2q * q / dq
-        th[i] = x
-    return th, dqt
+        th[i] = 2.0 * math.asin(math.sqrt(0.5 * t))
+        ok[i] = peak < 1e16 * abs(S1h)
+    return th, dqt, ok
 
 
 # --------------------------------------------------------------------------
@@ -376,7 +412,8 @@ def _weights_from_recurrence(n, a, b, theta, q_prev):
     At a root dQ_n/dtheta = -2n(n+b) Q_{n-1} / ((2n+a+b) sin theta).
     """
     c2 = 2.0 * n + a + b
-    return _c_over_end_value_squared(n, a, b) * (c2 * np.sin(theta) / (2.0 * n * (n + b) * q_prev)) ** 2
+    with np.errstate(divide="ignore"):   # Q_{n-1} = 0: caught by _check_recurrence_accuracy
+        return _c_over_end_value_squared(n, a, b) * (c2 * np.sin(theta) / (2.0 * n * (n + b) * q_prev)) ** 2
 
 
 def _interior_weight_constant(n, a, b):
@@ -395,9 +432,18 @@ def _boundary_nodes(n, a, b, theta0):
     """Nodes next to x = 1 by Newton on the dd hypergeometric series, with weights.
 
     w = C_n / (dP_n/dtheta)^2,  dP_n/dtheta = P_n(1) Q_n'(t) sin(theta).
+    Nodes where the series cancels more than dd holds (large exponents) are done by Newton
+    on the recurrence instead (O(n) each; a few nodes at most).
     """
-    th, dqt = _newton_boundary(n, a, b, theta0)
-    return th, _c_over_end_value_squared(n, a, b) / (dqt * np.sin(th)) ** 2
+    th, dqt, ok = _newton_boundary(n, a, b, theta0)
+    w = _c_over_end_value_squared(n, a, b) / (dqt * np.sin(th)) ** 2
+    growth = 1.0
+    if not ok.all():
+        bad = ~ok
+        th[bad], q_prev, g = _newton_recurrence(n, a, b, np.ascontiguousarray(theta0[bad]))
+        w[bad] = _weights_from_recurrence(n, a, b, th[bad], q_prev)
+        growth = _worst(g)
+    return th, w, growth
 
 
 def _half_small(n, a, b, theta0):
@@ -407,12 +453,14 @@ def _half_small(n, a, b, theta0):
     angles are close enough for the dd Newton iteration."""
     if theta0.size <= N_BOUNDARY:
         return _boundary_nodes(n, a, b, np.array(theta0, dtype=float))
-    th, q = _newton_recurrence(n, a, b, theta0)
+    th, q, g = _newton_recurrence(n, a, b, theta0)
     w = _weights_from_recurrence(n, a, b, th, q)
     nb = min(N_BOUNDARY, th.size)
+    growth = _worst(g[nb:]) if th.size > nb else 1.0
     if nb:
-        th[:nb], w[:nb] = _boundary_nodes(n, a, b, th[:nb])
-    return th, w
+        th[:nb], w[:nb], g_b = _boundary_nodes(n, a, b, th[:nb])
+        growth = _worst(growth, g_b)
+    return th, w, growth
 
 
 def _half_asymptotic(n, a, b, m):
@@ -422,7 +470,7 @@ def _half_asymptotic(n, a, b, m):
     th = np.empty(m)
     w = np.empty(m)
     if nb:
-        th[:nb], w[:nb] = _boundary_nodes(n, a, b, th0[:nb])
+        th[:nb], w[:nb], _ = _boundary_nodes(n, a, b, th0[:nb])
     if m > nb:
         th[nb:], w[nb:], _ = _newton_interior(n, a, b, th0[nb:], _interior_weight_constant(n, a, b))
     return th, w
@@ -451,6 +499,53 @@ def _golub_welsch_guess(n, a, b):
     return vals
 
 
+_GROWTH_WARN = 1e19     # ~1e-32 x growth: warn when the weights may be off by more than ~1e-13
+
+
+def _worst(*growths):
+    """Largest growth factor (floats or arrays), NaN (Q_{n-1} = 0 or NaN) counting as inf."""
+    out = 1.0
+    for g in growths:
+        v = float(g.max()) if isinstance(g, np.ndarray) else float(g)   # numpy max keeps NaN
+        if not v <= out:
+            out = math.inf if v != v else v
+    return out
+
+
+def _check_recurrence_accuracy(n, a, b, growth, *weights):
+    """Large exponents: the recurrence normalised at the end cancels (see _newton_recurrence).
+    Warn with the estimated accuracy; raise rather than return non-finite weights."""
+    if growth <= _GROWTH_WARN:
+        return
+    if not all(np.isfinite(w).all() and (w > 0).all() for w in weights):   # Q_{n-1} = 0: growth inf
+        raise FloatingPointError(
+            f"gauss_jacobi(n={n}, alpha={a!r}, beta={b!r}): the three-term recurrence lost all "
+            f"accuracy (non-finite or non-positive weights; max(alpha, beta) = {max(a, b):g} is "
+            f"too large for this n: n^max(alpha, beta) / max(alpha, beta)! must stay below ~1e30)")
+    warnings.warn(
+        f"gauss_jacobi(n={n}, alpha={a!r}, beta={b!r}): with exponents this large the "
+        f"three-term recurrence cancels; the weights may be off by up to ~{1e-32 * growth:.0e} "
+        f"(relative)", RuntimeWarning, stacklevel=3)
+
+
+def _positive_angles(th0):
+    """Starting angles (ascending) with no zeros.  An eigenvalue of the Jacobi matrix can
+    land on or beyond x = +-1 (absolute error ~ n eps, while an exponent near -1 puts the
+    first node ~1e-15 from the end); its angle is then 0, where Newton divides by
+    sin(theta) = 0.  Such starts are spread over (0, first positive angle): distinct, and
+    to the right of nothing but the roots they stand for."""
+    if not (th0.size and th0[0] <= 0.0):          # ascending: zeros come first
+        return th0
+    zero = th0 <= 0.0
+    if zero.any():
+        pos = th0[~zero]
+        top = pos[0] if pos.size else 1.0 / th0.size ** 2
+        k = np.count_nonzero(zero)
+        th0 = th0.copy()
+        th0[:k] = top * np.arange(1, k + 1) / (k + 1)
+    return th0
+
+
 def gauss_jacobi(n, alpha, beta):
     """Gauss-Jacobi nodes and weights.
 
@@ -474,21 +569,30 @@ def gauss_jacobi(n, alpha, beta):
     O(n) for n > 100 (Hale & Townsend 2013 interior asymptotics, boundary
     nodes by Newton on the recurrence in 1 - x); see the module docstring for
     the dispatch ladder.  Accuracy: nodes ~1e-16 absolute, weights ~1e-14
-    relative (tests/test_gauss_jacobi.py checks against mpmath).
+    relative (tests/test_gauss_jacobi.py checks against mpmath), also for exponents
+    within 1e-12 of -1.  A node closer to an end than the spacing of doubles there is
+    returned one ulp inside (-1, 1).
+
+    Large exponents (max(alpha, beta) > 5, rung 2): once n^max / max! exceeds ~1e19 the
+    recurrence loses digits; a RuntimeWarning then gives the estimated relative error of
+    the weights, and past ~1e30 (no digits left) FloatingPointError is raised rather
+    than returning non-finite weights.
     """
     n = check_order(n, 1)
     a = check_exponent("alpha", alpha)
     b = check_exponent("beta", beta)
     if n == 1:
-        return np.array([(b - a) / (a + b + 2.0)]), np.array([jacobi_moment(a, b)])
+        x1 = (b - a) / ((a + 1.0) + (b + 1.0))       # a + b + 2 without cancellation
+        return np.clip([x1], -_X_INSIDE, _X_INSIDE), np.array([jacobi_moment(a, b)])
 
     if n <= N_RECURRENCE_MAX or max(a, b) > _ASY_MAX_PARAM:
         guess = _golub_welsch_guess(n, a, b)
         right = guess >= 0.0
-        th_r0 = np.arccos(np.clip(guess[right][::-1], -1.0, 1.0))     # from x = 1, ascending theta
-        th_l0 = np.arccos(np.clip(-guess[~right], -1.0, 1.0))        # from x = -1, ascending theta
-        th_r, w_r = _half_small(n, a, b, th_r0)
-        th_l, w_l = _half_small(n, b, a, th_l0) if th_l0.size else (th_l0, th_l0)
+        th_r0 = _positive_angles(np.arccos(np.clip(guess[right][::-1], -1.0, 1.0)))  # from x = 1
+        th_l0 = _positive_angles(np.arccos(np.clip(-guess[~right], -1.0, 1.0)))      # from x = -1
+        th_r, w_r, g_r = _half_small(n, a, b, th_r0)
+        th_l, w_l, g_l = _half_small(n, b, a, th_l0) if th_l0.size else (th_l0, th_l0, 1.0)
+        _check_recurrence_accuracy(n, a, b, _worst(g_r, g_l), w_r, w_l)
     else:
         m_right = _half_count(n, a, b)
         th_r, w_r = _half_asymptotic(n, a, b, m_right)
@@ -496,6 +600,11 @@ def gauss_jacobi(n, alpha, beta):
 
     x = np.concatenate([-np.cos(th_l), np.cos(th_r[::-1])])
     w = np.concatenate([w_l, w_r[::-1]])
+    # a node closer to an end than half the spacing of doubles there (an exponent within
+    # ~1e-12 of -1) would round onto +-1, where the weight function is infinite: keep it
+    # one ulp inside (an absolute error below 1.2e-16; the weight, from theta, is unaffected)
+    x[0] = max(x[0], -_X_INSIDE)      # nodes ascend: only the outermost can round onto an end
+    x[-1] = min(x[-1], _X_INSIDE)
     return x, w
 
 

@@ -34,11 +34,14 @@ def _vandermonde(n, a, b, x):
     for i in range(m):
         V[i, 0] = 1.0
     if n > 1:
+        # a + b + 2 as (a+1) + (b+1): no cancellation when both exponents are near -1
+        ap1 = a + 1.0
+        abp2 = ap1 + (b + 1.0)
         for i in range(m):
-            V[i, 1] = (a + 1.0) + 0.5 * (a + b + 2.0) * (x[i] - 1.0)
+            V[i, 1] = ap1 + 0.5 * abp2 * (x[i] - 1.0)
         for k in range(1, n - 1):
-            s = 2.0 * k + a + b
-            d = 2.0 * (k + 1) * (k + a + b + 1.0) * s
+            s = 2.0 * (k - 1) + abp2
+            d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
             A = (s + 1.0) * (s + 2.0) * s / d
             B = (s + 1.0) * (a * a - b * b) / d
             C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d

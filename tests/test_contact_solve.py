@@ -412,6 +412,30 @@ def test_bad_slope_callable(slope, match, corners):
         contact.solve(MAT, contact.ProfilePunch(slope, corners=corners), load=0.01, speed=0.3)
 
 
+def test_bad_slope_met_only_by_the_solution_with_breaks_names_the_punch():
+    """With breaks the solution's remainder is built on first use, after the ends are found:
+    a slope that fails only there (NaN within 2e-11 of a break) still names the punch and X."""
+    def slope(X):
+        X = np.asarray(X, dtype=float)
+        return np.where(np.abs(np.abs(X) - 1.0) < 2.2e-11, np.nan, rounded_flat_slope(X))
+    with pytest.raises(ValueError, match=r"punch slope returned a non-finite value at X = -?1\.0"):
+        contact.solve(MAT, contact.ProfilePunch(slope, breaks=ROUNDED_FLAT_BREAKS), load=0.05,
+                      speed=0.3, friction=0.3, n=16)
+
+
+def test_punch_subclass_overriding_slope_is_used():
+    """A user's Punch subclass may override slope() itself (not only _slope)."""
+    class Parabola(contact.Punch):
+        corners = (None, None)
+
+        def slope(self, X):
+            return np.asarray(X, dtype=float) / 100.0
+    got = contact.solve(MAT, Parabola(), load=0.01, speed=0.3, friction=0.3)
+    ref = contact.solve(MAT, contact.CylindricalPunch(100.0), load=0.01, speed=0.3, friction=0.3)
+    L = ref.ends[1] - ref.ends[0]
+    assert max(abs(got.ends[0] - ref.ends[0]), abs(got.ends[1] - ref.ends[1])) <= 1e-12 * L
+
+
 def test_closed_form_needs_a_paper_punch():
     with pytest.raises(ValueError, match="closed_form"):
         contact.solve(MAT, contact.ProfilePunch(lambda X: X / 100.0), load=0.01, speed=0.3,

@@ -321,6 +321,56 @@ def test_polynomial_exactness(n, alpha, beta):
 
 
 # ---------------------------------------------------------------------------
+# 3b. extreme exponents (regressions found in review)
+# ---------------------------------------------------------------------------
+EXTREME_CASES = [
+    # exponent within 1e-8..1e-12 of -1 on the asymptotic rung: the Gatteschi-Pittaluga start
+    # of the first node is ~1e3..1e6 times too far out (Newton in theta only halves it)
+    (101, -1.0 + 1e-8, 0.0), (101, -1.0 + 1e-10, 0.5), (150, -1.0 + 1e-12, 0.5),
+    # both exponents near -1: s = 2 + a + b cancels in the recurrence coefficients
+    (30, -1.0 + 1e-8, -1.0 + 1e-8), (60, -1.0 + 1e-8, -1.0 + 1e-8),
+    # large exponents: the dd boundary series cancels more than dd holds (recurrence there)
+    (60, 30.0, 0.0), (300, 10.0, -0.5), (400, 8.0, 0.0),
+    # a Golub-Welsch eigenvalue at or beyond -1 (angle 0 start; the node is within one
+    # double spacing of -1)
+    (200, 7.0, -1.0 + 1e-14), (400, 7.0, -1.0 + 1e-12),
+]
+
+
+@pytest.mark.filterwarnings("ignore:.*three-term recurrence cancels")   # tested below
+@pytest.mark.parametrize("n,alpha,beta", EXTREME_CASES, ids=[_pid(*c) for c in EXTREME_CASES])
+def test_extreme_exponents_match_mpmath_reference(n, alpha, beta):
+    c = comparison(n, alpha, beta)
+    assert_output_contract(c.x, c.w, n)
+    assert_roots_identified(c)
+    # a node within 1e-16 of an end is only representable to the spacing of doubles there
+    assert c.node_err.max() <= NODE_ABS_TOL, c.worst(c.node_err)
+    # rung 2 (max(alpha, beta) > 5): the recurrence's own rounding, a few 1e-13 at n = 1000
+    tol = WEIGHT_REL_TOL if max(alpha, beta) <= 5 else 5e-13
+    assert c.weight_err.max() <= tol, c.worst(c.weight_err)
+
+
+@pytest.mark.parametrize("n,alpha,beta", [(1000, 10.0, -0.5), (300, 12.0, -0.5), (300, 15.0, 0.0)])
+def test_large_exponents_warn_with_an_estimate_that_bounds_the_error(n, alpha, beta):
+    """Past n^a / a! ~ 1e19 the recurrence normalised at x = 1 cancels beyond the ~32 digits
+    of its compensated sums: the rule is still returned, with a warning whose estimate of
+    the weights' relative error is an upper bound (and within 10x of the truth)."""
+    with pytest.warns(RuntimeWarning, match=r"off by up to ~") as rec:
+        gauss_jacobi_cached(n, alpha, beta)
+    est = float(re.search(r"up to ~([0-9.e+-]+)", str(rec[0].message)).group(1))
+    c = comparison(n, alpha, beta)
+    assert_output_contract(c.x, c.w, n)
+    assert c.weight_err.max() <= est, (c.worst(c.weight_err), est)
+    assert c.weight_err.max() >= est / 10, (c.worst(c.weight_err), est)
+
+
+@pytest.mark.parametrize("n,alpha,beta", [(1000, 20.0, 0.0), (1000, 0.0, 15.0)])
+def test_unusable_exponents_raise_instead_of_returning_inf(n, alpha, beta):
+    with pytest.raises(FloatingPointError, match=r"lost all accuracy.*too large for this n"):
+        sie.gauss_jacobi(n, alpha, beta)
+
+
+# ---------------------------------------------------------------------------
 # 4a. continuity across the method switch: every n = 20..200 against mpmath
 # ---------------------------------------------------------------------------
 @pytest.mark.parametrize("n,alpha,beta", SWEEP_CASES, ids=[_pid(*c) for c in SWEEP_CASES])

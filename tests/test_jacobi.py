@@ -38,8 +38,9 @@ def test_series_and_projection_span_several_blocks(a, b):
     m = 3 * _BLOCK // n + 7                      # four blocks, the last one partial
     x = rng.uniform(-1.0, 1.0, m)
     c = rng.standard_normal(n) / (1.0 + np.arange(n)) ** 2
-    V = reference_vandermonde(n, a, b, x[:200])
-    np.testing.assert_allclose(jacobi_series(c, a, b, x)[:200], V @ c, rtol=1e-12, atol=1e-13)
+    pick = np.arange(0, m, 97)                   # points from every block
+    V = reference_vandermonde(n, a, b, x[pick])
+    np.testing.assert_allclose(jacobi_series(c, a, b, x)[pick], V @ c, rtol=1e-12, atol=1e-13)
     v = rng.standard_normal(m)
     dense = v @ jacobi_vandermonde(n, a, b, x)
     np.testing.assert_allclose(jacobi_project(v, a, b, x, n), dense, rtol=1e-12,
