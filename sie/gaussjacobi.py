@@ -59,6 +59,7 @@ N_BOUNDARY = 10         # nodes per end done by recurrence on rung 3
 _ASY_MAX_PARAM = 5.0    # Hahn's expansion coefficients grow with |alpha|, |beta|
 _M_MAX = 40             # cap on the number of terms of the interior expansion
 _X_INSIDE = float(np.nextafter(1.0, 0.0))   # the largest double below 1
+_DD_CANCEL_MAX = 1e16   # dd boundary series: cancellation up to which Q' keeps ~16 digits
 _NEWTON_MAX = 12
 
 
@@ -128,7 +129,7 @@ def _newton_recurrence(n, a, b, theta):
             e[i] = e1 * t[i]
             q[i] = 1.0 + e[i]
             lo[i] = (1.0 - q[i]) + e[i]
-            big[i] = max(1.0, abs(q[i]))
+            big[i] = 1.0 if abs(q[i]) < 1.0 else abs(q[i])
         for k in range(1, n):
             Bk = Bt[k]
             Ck = Ct[k]
@@ -190,9 +191,9 @@ def _newton_boundary(n, a, b, theta):
     than dd holds).  The derivative is then moved from the last iterate to the root,
     Q'(t*) = Q'(t) - Q''(t) Q(t)/Q'(t), without another evaluation.
 
-    Third value: whether dd was enough, i.e. the largest term over |S1| (the cancellation
-    in Q') stays below 1e16, so that Q' keeps ~16 digits.  Large exponents (a ~ 20 and up)
-    break this at the outer boundary nodes; the caller then uses the recurrence there.
+    Third value: the cancellation in Q', the largest term over |S1|.  Below 1e16, dd leaves
+    Q' ~16 digits; large exponents (a ~ 20 and up) exceed it at the outer boundary nodes,
+    and the caller uses the recurrence there.
     """
     rh = np.empty(n)
     rl = np.empty(n)
@@ -201,11 +202,13 @@ def _newton_boundary(n, a, b, theta):
     th = theta.copy()
     m = th.shape[0]
     dqt = np.empty(m)
-    ok = np.empty(m, dtype=np.bool_)
+    cancel = np.empty(m)
     for i in range(m):
         sh = math.sin(0.5 * th[i])
-        t = max(2.0 * sh * sh, 1e-300)     # t = 0 (a clipped start): Newton's first step is
-        q = 0.0                            # then the linearisation of Q_n at the end
+        t = 2.0 * sh * sh
+        if t < 1e-300:      # t = 0 (a clipped start): Newton's first step is then the
+            t = 1e-300      # linearisation of Q_n at the end
+        q = 0.0
         dq = 1.0
         d2q = 0.0
         prev = math.inf
@@ -256,8 +259,8 @@ def _newton_boundary(n, a, b, theta):
             prev = step
         dqt[i] = dq - d2q * q / dq
         th[i] = 2.0 * math.asin(math.sqrt(0.5 * t))
-        ok[i] = peak < 1e16 * abs(S1h)
-    return th, dqt, ok
+        cancel[i] = peak / abs(S1h)
+    return th, dqt, cancel
 
 
 # --------------------------------------------------------------------------
@@ -435,11 +438,11 @@ def _boundary_nodes(n, a, b, theta0):
     Nodes where the series cancels more than dd holds (large exponents) are done by Newton
     on the recurrence instead (O(n) each; a few nodes at most).
     """
-    th, dqt, ok = _newton_boundary(n, a, b, theta0)
+    th, dqt, cancel = _newton_boundary(n, a, b, theta0)
     w = _c_over_end_value_squared(n, a, b) / (dqt * np.sin(th)) ** 2
     growth = 1.0
-    if not ok.all():
-        bad = ~ok
+    if not cancel.max() < _DD_CANCEL_MAX:
+        bad = ~(cancel < _DD_CANCEL_MAX)
         th[bad], q_prev, g = _newton_recurrence(n, a, b, np.ascontiguousarray(theta0[bad]))
         w[bad] = _weights_from_recurrence(n, a, b, th[bad], q_prev)
         growth = _worst(g)
