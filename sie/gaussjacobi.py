@@ -24,7 +24,10 @@ is not accurate, and where the recurrence loses relative accuracy in the weights
 for exponents near -1) are finished by Newton on the terminating hypergeometric
 series at that end, summed in double-double in t = 1 - x so that it keeps
 relative precision (O(1) terms per node: O(n) overall).  For n <= 2 N_BOUNDARY
-the Golub-Welsch angles go straight to that series.
+the Golub-Welsch angles go straight to that series.  Where the series cancels past
+dd precision (exponents ~20 and up) the recurrence is kept; where the recurrence
+itself cancels (rung 2, n^max(a,b) / max(a,b)! > ~1e19) a warning gives the estimated
+error, and FloatingPointError is raised once nothing is left (see gauss_jacobi).
 
 Nodes with x >= 0 are computed with (alpha, beta) and theta measured from
 x = 1; nodes with x < 0 by the reflection P_n^{(a,b)}(-x) = (-1)^n P_n^{(b,a)}(x)
@@ -170,8 +173,8 @@ def _newton_recurrence(n, a, b, theta):
 #     P_n(1-t)/P_n(1) = 2F1(-n, n+a+b+1; a+1; t/2) = sum_k T_k   (DLMF 18.5.7),
 # summed in double-double.  Next to the end it behaves like the series of
 # J_a(rho theta): terms peak near e^{rho theta}, so the tenth node (rho theta
-# ~ 31) cancels ~13 digits, which dd arithmetic (~32 digits) absorbs; cost is
-# O(1) per node (about 2 rho theta terms), independent of n.
+# ~ 31 + a) cancels ~13 digits for a ~ 0, which dd arithmetic (~32 digits) absorbs;
+# cost is O(1) per node (about 2 rho theta terms), independent of n.
 # --------------------------------------------------------------------------
 @jit()
 def _newton_boundary(n, a, b, theta):
