@@ -124,6 +124,7 @@ def _newton_recurrence(n, a, b, theta):
     e1 = -abp2 / (2.0 * ap1)
     converged = False
     for it in range(_NEWTON_MAX + 1):
+        final = converged or it == _NEWTON_MAX     # this pass only evaluates
         for i in range(m):
             sh = math.sin(0.5 * th[i])
             t[i] = 2.0 * sh * sh
@@ -145,9 +146,9 @@ def _newton_recurrence(n, a, b, theta):
                 bb = s - q[i]
                 lo[i] += (q[i] - (s - bb)) + (ei - bb)
                 q[i] = s
-                if abs(s) > big[i]:
+                if final and abs(s) > big[i]:
                     big[i] = abs(s)
-        if converged or it == _NEWTON_MAX:
+        if final:
             break
         biggest = 0.0
         for i in range(m):
@@ -434,18 +435,25 @@ def _interior_weight_constant(n, a, b):
     return math.pi * 2.0 ** (a + b + 1.0) * math.exp(lg)
 
 
-def _boundary_nodes(n, a, b, theta0):
-    """Nodes next to x = 1 by Newton on the dd hypergeometric series, with weights.
+def _dd_boundary(n, a, b, theta0):
+    """Nodes next to x = 1 by Newton on the dd hypergeometric series, with weights, and
+    the mask of the nodes where dd sufficed (see _newton_boundary).
 
     w = C_n / (dP_n/dtheta)^2,  dP_n/dtheta = P_n(1) Q_n'(t) sin(theta).
-    Nodes where the series cancels more than dd holds (large exponents) are done by Newton
-    on the recurrence instead (O(n) each; a few nodes at most).
     """
     th, dqt, cancel = _newton_boundary(n, a, b, theta0)
     w = _c_over_end_value_squared(n, a, b) / (dqt * np.sin(th)) ** 2
+    return th, w, cancel < _DD_CANCEL_MAX        # NaN cancellation counts as not enough
+
+
+def _boundary_nodes(n, a, b, theta0):
+    """Boundary nodes with no recurrence values at hand (rung 3, or a half that is all
+    boundary): dd where it suffices, Newton on the recurrence elsewhere (large exponents;
+    O(n) each, a few nodes at most).  Returns angles, weights and the recurrence growth."""
+    th, w, ok = _dd_boundary(n, a, b, theta0)
     growth = 1.0
-    if not cancel.max() < _DD_CANCEL_MAX:
-        bad = ~(cancel < _DD_CANCEL_MAX)
+    if not ok.all():
+        bad = ~ok
         th[bad], q_prev, g = _newton_recurrence(n, a, b, np.ascontiguousarray(theta0[bad]))
         w[bad] = _weights_from_recurrence(n, a, b, th[bad], q_prev)
         growth = _worst(g)
@@ -462,11 +470,12 @@ def _half_small(n, a, b, theta0):
     th, q, g = _newton_recurrence(n, a, b, theta0)
     w = _weights_from_recurrence(n, a, b, th, q)
     nb = min(N_BOUNDARY, th.size)
-    growth = _worst(g[nb:]) if th.size > nb else 1.0
-    if nb:
-        th[:nb], w[:nb], g_b = _boundary_nodes(n, a, b, th[:nb])
-        growth = _worst(growth, g_b)
-    return th, w, growth
+    tb, wb, ok = _dd_boundary(n, a, b, th[:nb])
+    th[:nb][ok] = tb[ok]                  # where dd does not suffice the recurrence stays
+    w[:nb][ok] = wb[ok]
+    kept = np.ones(th.size, dtype=bool)   # the nodes whose recurrence values are returned
+    kept[:nb] = ~ok
+    return th, w, _worst(g[kept])
 
 
 def _half_asymptotic(n, a, b, m):

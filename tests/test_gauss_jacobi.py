@@ -36,6 +36,7 @@ from hypothesis import strategies as st
 from mpmath import mp, mpf
 
 import sie
+from sie.gaussjacobi import gauss_jacobi_cached   # memoised, read-only arrays
 
 try:                                   # tests/ is not a package (pytest "prepend" import mode)
     import _mpref as ref
@@ -89,14 +90,6 @@ SWEEP_CASES = [(n, a, b) for (a, b) in SWEEP_PAIRS for n in range(20, 201)]
 # ---------------------------------------------------------------------------
 # library vs. mpmath reference (cached: node and weight tests share it)
 # ---------------------------------------------------------------------------
-@functools.lru_cache(maxsize=None)
-def gauss_jacobi_cached(n, alpha, beta):
-    x, w = sie.gauss_jacobi(n, alpha, beta)
-    x.setflags(write=False)
-    w.setflags(write=False)
-    return x, w
-
-
 class Comparison:
     """Library rule vs. refined roots/weights for the checked node indices."""
 
