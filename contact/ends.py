@@ -58,19 +58,27 @@ class _Problem:
         br = [s for s in br if abs(s) < 1.0 - 1e-12]
         return h, (lambda s: slope(h * s + m)), br
 
-    def _run(self, xl, xr, fn):
-        """``fn(h, f, breaks)`` for the trial contact [xl, xr] (see :meth:`_equation`)."""
+    def _run(self, xl, xr, fn, raw=True):
+        """``fn(h, f, breaks)`` for the trial contact [xl, xr] (see :meth:`_equation`).
+
+        ``raw``: first with the raw slope; a failure is re-run with the checked slope so
+        that the error names the punch and the X.  ``raw=False``: the checked slope only.
+        """
+        first = None
+        if raw:
+            try:
+                return fn(*self._equation(xl, xr))
+            except CallableOutputError as exc:
+                first = exc
         try:
-            return fn(*self._equation(xl, xr))
-        except CallableOutputError as exc:
-            first = exc
-        try:                      # the same call with the checked slope, for a precise error
-            fn(*self._equation(xl, xr, checked=True))
+            out = fn(*self._equation(xl, xr, checked=True))
         except CallableOutputError as exc:
             if isinstance(exc.__cause__, ContactInputError):
                 raise exc.__cause__ from None
             raise
-        raise first
+        if first is not None:
+            raise first
+        return out
 
     def _sie_kw(self):
         return dict(a=self.a, b=self.b, left=self.left, right=self.right)
@@ -84,12 +92,7 @@ class _Problem:
             return sie.solve(f, n=n, total=total, breaks=br, **self._sie_kw())
         # the checked slope: the solution keeps f and calls it again later (the remainder of
         # a solution with breaks is built on first use), outside _run's error translation
-        try:
-            return run(*self._equation(xl, xr, checked=True))
-        except CallableOutputError as exc:
-            if isinstance(exc.__cause__, ContactInputError):
-                raise exc.__cause__ from None
-            raise
+        return self._run(xl, xr, run, raw=False)
 
     def functionals_on(self, xl, xr):
         """(load carried, solvability residual) on [xl, xr], without forming the solution
