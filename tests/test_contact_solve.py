@@ -29,6 +29,7 @@ from scipy.integrate import quad
 import contact
 from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, hyperbolic_tip_slope,
                                  rounded_flat_slope, w_slope)
+from validation.sampling import S40, interior, outside
 
 MAT = contact.zhou2014()
 C_R = contact.rayleigh_speed(MAT)
@@ -45,8 +46,6 @@ PUNCHES = {
     "cylindrical": lambda: contact.CylindricalPunch(100.0),
 }
 
-# s in (-1, 1): 40 Chebyshev points, never on an end
-S40 = np.cos(np.pi * (np.arange(40) + 0.5) / 40)
 
 
 def report(msg):
@@ -66,18 +65,9 @@ def _pair(punch_name, c, mu, d, load=LOAD):
     return rn, rc
 
 
-def interior(ends, s=S40):
-    xl, xr = ends
-    return 0.5 * (xl + xr) + 0.5 * (xr - xl) * s
-
-
 def sample_points(ends):
     """Interior points and outside points on both sides of the contact."""
-    xl, xr = ends
-    L = xr - xl
-    outside = np.array([xl - 5.0 * L, xl - 0.3 * L, xl - 0.01 * L,
-                        xr + 0.01 * L, xr + 0.2 * L, xr + 5.0 * L])
-    return np.concatenate([interior(ends), outside])
+    return np.concatenate([interior(ends), outside(ends)])
 
 
 def compare(rn, rc):

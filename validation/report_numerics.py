@@ -16,6 +16,7 @@ import sie
 from .profiles import (HYP_D, ROUNDED_FLAT_BREAKS, asymmetric_slope, exp_wedge_slope,
                        hyperbolic_tip_slope, rounded_flat_slope, w_slope)
 from .report_doc import fmt_err, fmt_num, fmt_t
+from .sampling import S40, interior, outside
 
 MAT = contact.zhou2014()
 LOAD = 0.01
@@ -27,7 +28,6 @@ PUNCHES = {
     "parabolic": lambda: contact.ParabolicPunch(100.0),
     "cylindrical": lambda: contact.CylindricalPunch(100.0),
 }
-S40 = np.cos(np.pi * (np.arange(40) + 0.5) / 40)           # interior points, never an end
 
 
 def best_time(fn, repeat=3):
@@ -39,17 +39,6 @@ def best_time(fn, repeat=3):
         fn()
         best = min(best, time.perf_counter() - t0)
     return best, out
-
-
-def interior(ends, s=S40):
-    xl, xr = ends
-    return 0.5 * (xl + xr) + 0.5 * (xr - xl) * s
-
-
-def outside(ends):
-    xl, xr = ends
-    L = xr - xl
-    return np.array([xl - 5.0 * L, xl - 0.3 * L, xl - 0.01 * L, xr + 0.01 * L, xr + 0.2 * L, xr + 5.0 * L])
 
 
 def compare(rn, rc):
