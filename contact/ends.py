@@ -9,6 +9,7 @@ equation (Zhou et al. 2014, eq. (5.40)): center by continuation, half-width by b
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -83,13 +84,17 @@ class _Problem:
     def _sie_kw(self):
         return dict(a=self.a, b=self.b, left=self.left, right=self.right)
 
-    def solve_on(self, xl, xr, n=None):
-        """The full solution on the trial contact [xl, xr]."""
+    def solve_on(self, xl, xr, n=None, check_residual=True):
+        """The full solution on the trial contact [xl, xr].  ``check_residual=False`` silences
+        sie's ResidualWarning (the adaptive loop judges convergence itself)."""
         n = self.n if n is None else n
 
         def run(h, f, br):
             total = self.load / h if self.punch.kappa == 1 else None
-            return sie.solve(f, n=n, total=total, breaks=br, **self._sie_kw())
+            with warnings.catch_warnings():
+                if not check_residual:
+                    warnings.simplefilter("ignore", sie.ResidualWarning)
+                return sie.solve(f, n=n, total=total, breaks=br, **self._sie_kw())
         # the checked slope: the solution keeps f and calls it again later (the remainder of
         # a solution with breaks is built on first use), outside _run's error translation
         return self._run(xl, xr, run, raw=False)

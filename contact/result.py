@@ -153,9 +153,13 @@ def _residual_of(res):
     sol = res.solution
     s = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
     f = res.punch.slope(res.half_width * s + res.center)
+    psi = sol(s)
     hc = res.constants.N11 * sol.cauchy(s)
-    lhs = res.constants.N12 * res.mu_f * sol(s) + hc
-    scale = max(np.max(np.abs(f)), np.max(np.abs(hc)), np.finfo(float).tiny)
+    lhs = res.constants.N12 * res.mu_f * psi + hc
+    # the scale of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its
+    # rounding is eps |N11| max|p|
+    scale = max(np.max(np.abs(f)), np.max(np.abs(hc)), abs(res.constants.N11) * np.max(np.abs(psi)),
+                np.finfo(float).tiny)
     return float(np.max(np.abs(lhs - f)) / scale)
 
 

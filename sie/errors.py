@@ -18,6 +18,12 @@ __all__ = [
     "CallableOutputError",
     "InvalidBreakpointError",
     "EvaluationPointError",
+    "InvalidIntervalError",
+    "PerIntervalArgumentError",
+    "KernelSingularityError",
+    "SIEWarning",
+    "InconsistentEquationWarning",
+    "ResidualWarning",
 ]
 
 
@@ -57,6 +63,32 @@ class EvaluationPointError(SIEInputError):
     """An evaluation point is not finite or lies where the quantity is infinite."""
 
 
+class InvalidIntervalError(SIEInputError):
+    """``intervals`` is not a sequence of finite, ascending, disjoint (c, d) pairs with c < d."""
+
+
+class PerIntervalArgumentError(SIEInputError):
+    """A per-interval argument (n, left, right, total, breaks) does not fit the intervals."""
+
+
+class KernelSingularityError(SIEInputError):
+    """The kernel k(s, t) is unbounded at an end (a fixed singularity, e.g. the edge crack's
+    generalised Cauchy kernel): it changes the end exponent, which the Jacobi basis fixes."""
+
+
+class SIEWarning(UserWarning):
+    """Base class of the warnings of :mod:`sie`: a result is returned but is suspect."""
+
+
+class InconsistentEquationWarning(SIEWarning):
+    """Index -1 (both ends bounded) and f violates the solvability condition: the returned
+    psi solves the equation with f minus its inconsistent part only."""
+
+
+class ResidualWarning(SIEWarning):
+    """The returned solution leaves a residual in the equation that is not small against f."""
+
+
 def check_finite_real(name: str, value, error=SIEInputError) -> float:
     """Return ``value`` as a float or raise ``error`` naming ``name``."""
     try:
@@ -90,14 +122,32 @@ def check_exponent(name: str, value) -> float:
     return v
 
 
+_RETRY_MAX = 4096   # points re-tried one by one to name the point where a callable raised
+
+
+def _failing_point(fn, args):
+    """The first point at which ``fn`` raises when called on one point at a time (the
+    arrays in ``args`` share a shape), or None."""
+    flat = [np.ravel(a) for a in args]
+    for i in range(min(flat[0].size, _RETRY_MAX)):
+        try:
+            fn(*(a[i:i + 1] for a in flat))
+        except Exception:
+            return tuple(float(a[i]) for a in flat)
+    return None
+
+
 def call_checked(fn, name, args, shape):
     """``fn(*args)`` as a float array of the given shape, or a :class:`CallableOutputError`
-    naming ``name`` (an exception inside fn, complex or non-numeric output, a wrong shape,
-    a non-finite value and where it occurred)."""
+    naming ``name`` and the point (an exception inside fn -- any ``Exception``, chained as
+    the cause --, complex or non-numeric output, a wrong shape, a non-finite value)."""
     try:
         out = fn(*args)
-    except (ValueError, TypeError, ArithmeticError) as exc:
-        raise CallableOutputError(f"{name} raised {type(exc).__name__}: {exc}") from exc
+    except Exception as exc:
+        where = _failing_point(fn, args)
+        at = f" at {where}" if where is not None else (
+            f" (called on {np.size(args[0])} points; no single one raises alone)")
+        raise CallableOutputError(f"{name} raised {type(exc).__name__}{at}: {exc}") from exc
     out = np.asarray(out)
     if out.dtype.kind == "c":
         raise CallableOutputError(f"{name} must return real values, got complex")

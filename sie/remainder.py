@@ -5,10 +5,10 @@ coefficients when the projections are computed by the composite rule, but its
 truncation error decays only algebraically when f has a kink.  What is missing
 is the inverse of the dominant operator applied to the projection remainder
 
-    r = g - sum_{m<M} g_m P_m^{(-alpha,-beta)},     g = f - int k psi_N,
+    r = g - sum_{m<M} g_m P_m^{(-alpha,-beta)},     g = f - (coupling + kernel) psi_N,
 
-which the Muskhelishvili inversion formula gives pointwise (derived from
-sie-math.md item 1 applied to the weight 1/w, checked in tests):
+which the Muskhelishvili inversion formula gives pointwise (the dominant identity of
+Erdogan, Gupta & Cook 1973 applied to the weight 1/w; checked in tests):
 
     R[r] = w delta_phi,
     delta_phi(x) = -b/(a^2+b^2) [ I(x) + 2^kappa P_kappa^{(alpha,beta)}(x) r(x)/sin(pi alpha) ] + C,
@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import call_checked
-from .gaussjacobi import gauss_jacobi, gauss_jacobi_cached
+from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_series
 from .special import jacobi_moment_shifted
 
@@ -117,33 +117,31 @@ def _end_grading(breaks):
 @dataclass(eq=False)
 class InversionRemainder:
     """delta_phi, its integral and Cauchy transform (see module docstring)."""
-    sol: object
+    sol: object                 # the IntervalSolution (polynomial part)
+    a: float
+    b: float
     f: object
-    kernel: object
+    other: object               # coupling + kernel terms at local points, or None
     rules: list                 # [(s, ws, r_s)] for weight 1/w
-    g_coef: np.ndarray          # projections g_m of g
-    t_k: np.ndarray | None      # kernel quadrature (weight w)
-    w_k: np.ndarray | None
-    phi_k: np.ndarray | None
+    g_coef: np.ndarray          # projections g_m of g = f - other
     const: float = 0.0
     w_rule: tuple = ()
     _wphi: np.ndarray | None = None     # w_rule weights times delta_phi at its nodes
 
     @classmethod
-    def build(cls, sol, f, kernel, breaks, s, ws, fs, fhat, kc, lam):
-        alpha, beta = sol.alpha, sol.beta
-        g_coef = fhat - (kc if kc is not None else 0.0)
-        t_k = w_k = phi_k = None
-        if kernel is not None:
-            t_k, w_k = gauss_jacobi(sol.n + 16, alpha, beta)
-            phi_k = jacobi_series(sol.coefficients, alpha, beta, t_k)
-        self = cls(sol, f, kernel, [], g_coef, t_k, w_k, phi_k)
+    def build(cls, piece, a, b, f, other, breaks, s, ws, fs, g_coef):
+        """``piece``: the :class:`sie.solution.IntervalSolution` (polynomial part);
+        ``f``, ``other``: f and the coupling + kernel terms of the polynomial solution as
+        callables of the local coordinate (``other`` None when there are none); ``s, ws, fs``:
+        the composite projection rule and f there; ``g_coef``: projections of f - other."""
+        self = cls(piece, a, b, f, other, [], g_coef)
         q = s.size // (breaks.size + 1)
         # I(x) for x close to a break c: in the neighbouring piece the integrand has a pole
         # at distance |x - c|, so the pieces are graded toward the breaks (Gauss-Legendre on
         # a geometric mesh resolves a pole at any distance; without it phi(c + 1e-3) was
         # off by 1e-4 at n = 24)
         pts = graded_points(breaks)
+        alpha, beta = piece.alpha, piece.beta
         for shift in (0, 1):    # two interleaved rules: counts differ by one on every piece,
             # so no x (e.g. a piece midpoint, a node of every odd-count rule) is a node of both
             nodes, weights = _graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
@@ -156,24 +154,19 @@ class InversionRemainder:
         # next to that end (x = 1.001 lost 5e-8 at n = 48 without it)
         self.w_rule = _graded_rule(max(q, 24), alpha, beta, breaks,
                                    np.union1d(pts, _end_grading(breaks)), _Q_SMALL + 2)
-        if sol.kappa == 1:
+        if piece.kappa == 1:
             tw, ww = self.w_rule
             self.const = -float(ww @ self._phi_no_const(tw)) / jacobi_moment_shifted(
-                sol._exp.alpha_p1, sol._exp.beta_p1)
+                piece.exp.alpha_p1, piece.exp.beta_p1)
         return self
 
     # g - Pi g at points x, given f(x)
     def _r(self, x, fx):
         sol = self.sol
         out = fx - jacobi_series(self.g_coef, -sol.alpha, -sol.beta, x)
-        if self.kernel is not None:
-            out = out - self._kpsi(x)
+        if self.other is not None:
+            out = out - self.other(x)
         return out
-
-    def _kpsi(self, x):
-        X, T = np.meshgrid(x, self.t_k, indexing="ij")
-        k = call_checked(self.kernel, "kernel", (X, T), X.shape)
-        return k @ (self.w_k * self.phi_k)
 
     def _phi_no_const(self, x):
         sol = self.sol
@@ -201,8 +194,8 @@ class InversionRemainder:
             pk = np.ones(x.shape)
         else:
             pk = np.zeros(x.shape)
-        a, b = sol.a, sol.b
-        return -b / (a * a + b * b) * (integral + 2.0 ** k * pk * rx / sol._exp.sin)
+        a, b = self.a, self.b
+        return -b / (a * a + b * b) * (integral + 2.0 ** k * pk * rx / sol.exp.sin)
 
     def phi(self, x):
         return self._phi_no_const(x) + self.const
@@ -211,9 +204,9 @@ class InversionRemainder:
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
         sol = self.sol
         gx = call_checked(self.f, "f", (x,), x.shape)
-        if self.kernel is not None:
-            gx = gx - self._kpsi(x)
-        return (gx - sol.a * psi_full) / sol.b
+        if self.other is not None:
+            gx = gx - self.other(x)
+        return (gx - self.a * psi_full) / self.b
 
     def cauchy_outside(self, x):
         """(1/pi) int w delta_phi/(t - x) dt by the graded composite rule (x off [-1, 1])."""

@@ -1,387 +1,276 @@
-"""Gauss-Jacobi collocation for Cauchy singular integral equations of the second kind.
+"""Gauss-Jacobi collocation for Cauchy singular integral equations of the second kind on
+one or several intervals.
 
-    a psi(s) + (b/pi) PV int_{-1}^{1} psi(t)/(t - s) dt + int_{-1}^{1} k(s,t) psi(t) dt = f(s)
+    a psi(s) + (b/pi) PV int_L psi(t)/(t - s) dt + int_L k(s,t) psi(t) dt = f(s),   s in L,
+    L = [c_1, d_1] U ... U [c_J, d_J].
 
-psi = w phi, w(s) = (1-s)^alpha (1+s)^beta, phi = sum_k c_k P_k^{(alpha,beta)}.
+The stages of :func:`solve`, each in its own module:
 
-The dominant operator maps the basis exactly (sie-math.md item 1; Erdogan,
-Gupta & Cook 1973):
+1. **unknowns** (:mod:`sie.unknowns`): per interval, psi = w phi with the exponents of its
+   end choices, phi = sum_{k<n} c_k P_k^{(alpha,beta)} in the local coordinate, and the
+   projection rule of (1-u)^{-alpha}(1+u)^{-beta} (collocation at the roots of
+   P_{n-kappa}^{(-alpha,-beta)}; Erdogan, Gupta & Cook 1973; Krenk 1975);
+2. **right-hand side**: f projected onto P_m^{(-alpha,-beta)} per interval;
+3. **assembly** (:mod:`sie.assembly`): the exact dominant operator on the diagonal blocks,
+   the coupling between intervals (exact Cauchy transforms of the Jacobi basis off its
+   interval, :mod:`sie.cauchy`) and the kernel off it, side conditions as rows, one solve;
+4. **result** (:mod:`sie.solution`): an immutable :class:`Solution`, with the residual checks
+   (solvability for index -1, the equation at points between the nodes).
 
-    a w P_k + b H[w P_k] = lambda P_{k-kappa}^{(-alpha,-beta)},
-    lambda = -2^{-kappa} b / sin(pi alpha),   H[g](x) = (1/pi) PV int g(t)/(t-x) dt,
-
-so the equation is projected onto P_m^{(-alpha,-beta)}, m < n - kappa, with the
-Gauss-Jacobi rule of the weight (1-s)^{-alpha}(1+s)^{-beta} at n - kappa nodes;
-that is collocation at the roots of P_{n-kappa}^{(-alpha,-beta)} (Krenk 1975).
-Without a kernel the system is diagonal.  kappa = 1: the side condition
-int psi = mu_0 c_0 = total closes it.  kappa = -1: the projection on m = 0 is
-the solvability condition (Muskhelishvili 1953, sec. 110), reported as
-``Solution.consistency``.
-
-Right-hand sides with kinks: with ``breaks`` the projections are computed by a
-composite rule split at the breaks (so the coefficients are exact to rounding)
-and phi is evaluated pointwise by adding the exact inversion of the truncation
-remainder r = g - Pi g (Muskhelishvili inversion formula, see
-:func:`_inversion_phi`), which converges spectrally in the number of nodes per
-piece.  Without ``breaks`` a kink costs algebraic convergence (the Jacobi series
-of phi then decays only like k^{-2}).
+Right-hand sides with kinks: with ``breaks`` the projections are computed by a composite rule
+split at the breaks, and phi is evaluated pointwise by adding the exact inversion of the
+truncation remainder (:mod:`sie.remainder`).
 """
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
+import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import (CallableOutputError, EvaluationPointError, InvalidBreakpointError,
-                     InvalidCoefficientError, InvalidEndConditionError, SideConditionError,
-                     call_checked, check_finite_real, check_order)
-from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_norms, jacobi_project, jacobi_series, jacobi_vandermonde
-from .special import jacobi_end_values, jacobi_moment_shifted
+from .assembly import assemble_and_solve, coupling_images, kernel_images, probe_kernel
+from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidCoefficientError,
+                     InvalidEndConditionError, InvalidOrderError, ResidualWarning,
+                     SideConditionError, call_checked, check_finite_real, check_order)
+from .exponents import END_CHOICES, Exponents, sie_exponents
+from .intervals import Interval, check_intervals, per_interval, split_breaks
+from .jacobi import jacobi_norms, jacobi_series
+from .solution import IntervalSolution, Solution
+from .unknowns import IntervalUnknown
 
-__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals", "Functionals", "FunctionalsRule"]
+__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals",
+           "Functionals", "FunctionalsRule", "N_MAX"]
 
-END_CHOICES = ("bounded", "singular")
-_EXTRA_PER_PIECE = 24       # extra nodes per piece of the composite rule (breaks)
-_KERNEL_EXTRA = 16          # t-nodes beyond n for int k(s,t) psi(t) dt
-
-
-# --------------------------------------------------------------------------
-# exponents
-# --------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Exponents:
-    """Endpoint exponents of psi = (1-s)^alpha (1+s)^beta phi.
-
-    alpha0 in (0,1) solves cot(pi alpha0) = -a/b.  ``cot`` = cot(pi alpha) = -a/b,
-    ``sin`` = sin(pi alpha).  The shifted exponents 1 + alpha, 1 + beta (those of
-    the solution weight at its ends) and 1 - alpha, 1 - beta (those of the
-    projection weight (1-s)^{-alpha}(1+s)^{-beta}) are carried separately, each
-    computed without cancellation from alpha0 or 1 - alpha0: when an exponent is
-    within 1e-8 of -1, recomputing e + 1 from a rounded e would lose 8 digits,
-    and moments ~ 1/(e+1) with it.
-    """
-    alpha: float
-    beta: float
-    kappa: int
-    alpha0: float
-    cot: float
-    sin: float
-    alpha_p1: float   # 1 + alpha
-    beta_p1: float    # 1 + beta
-    alpha_m1: float   # 1 - alpha
-    beta_m1: float    # 1 - beta
-
-
-def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
-    """Exponents and index from cot(pi alpha0) = -a/b and the end choices.
-
-    Right end: alpha = alpha0 ("bounded") or alpha0 - 1 ("singular"); left end:
-    beta = 1 - alpha0 ("bounded") or -alpha0 ("singular"); kappa = -(alpha+beta).
-    (Muskhelishvili 1953, ch. 10; Erdogan, Gupta & Cook 1973.)
-    """
-    y = -a / b                                   # cot(pi alpha0)
-    alpha0 = math.atan2(1.0, y) / math.pi        # principal arccot, in (0, 1)
-    alpha0c = math.atan2(1.0, -y) / math.pi      # 1 - alpha0, without cancellation
-    sin0 = 1.0 / math.hypot(1.0, y)              # sin(pi alpha0) > 0
-    if right == "bounded":
-        alpha, alpha_p1, alpha_m1 = alpha0, 1.0 + alpha0, alpha0c
-    else:
-        alpha, alpha_p1, alpha_m1 = -alpha0c, alpha0, 1.0 + alpha0c
-    if left == "bounded":
-        beta, beta_p1, beta_m1 = alpha0c, 1.0 + alpha0c, alpha0
-    else:
-        beta, beta_p1, beta_m1 = -alpha0, alpha0c, 1.0 + alpha0
-    kappa = {("singular", "singular"): 1, ("bounded", "bounded"): -1}.get((left, right), 0)
-    sin_pa = sin0 if right == "bounded" else -sin0  # sin(pi(alpha0 - 1)) = -sin(pi alpha0)
-    return Exponents(alpha, beta, kappa, alpha0, y, sin_pa, alpha_p1, beta_p1, alpha_m1, beta_m1)
+N_MAX = 20_000          # basis size per interval: the projection is dense, O(n^2) work
+CONSISTENCY_TOL = 1e-8  # |consistency| above this times max|f| warns (index -1)
+RESIDUAL_TOL = 1e-6     # equation residual above this times its scale warns
+_CHECK_POINTS = np.cos(np.pi * (np.arange(7) + 0.5) / 7) * 0.999
 
 
 # --------------------------------------------------------------------------
-# validation helpers
+# validation
 # --------------------------------------------------------------------------
-def _check_breaks(breaks):
-    if isinstance(breaks, (tuple, list)) and len(breaks) == 0:
-        return np.empty(0)
-    try:
-        br = np.asarray(breaks, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidBreakpointError(f"breaks must be real numbers in (-1, 1), got {breaks!r}") from None
-    if not (np.abs(br) < 1.0).all():           # also False for NaN
-        raise InvalidBreakpointError(
-            f"breaks must be finite points strictly inside (-1, 1), got {br.tolist()}")
-    br = np.sort(br)
-    if br.size > 1:                              # drop repeats (np.unique is slower here)
-        br = br[np.concatenate(([True], np.diff(br) > 0.0))]
-    return br
+def _check_coefficients(a, b):
+    a = check_finite_real("a", a, InvalidCoefficientError)
+    b = check_finite_real("b", b, InvalidCoefficientError)
+    if b == 0.0:
+        raise InvalidCoefficientError(
+            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
+    return a, b
 
 
-# --------------------------------------------------------------------------
-# Gauss-Jacobi sums with the mass of a nearly non-integrable end taken out
-# --------------------------------------------------------------------------
-_NEAR_MINUS_ONE = 0.01   # e + 1 below this: the weight's end mass ~ 1/(e+1) is split off
+def _check_ends(name, v):
+    if v not in END_CHOICES:
+        raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
+    return v
 
 
-@dataclass(frozen=True)
-class _WeightedRule:
-    """int (1-x)^a (1+x)^b g(x) dx  ~  sum_j omega_j g(x_j) + g(end) * corr.
+def _check_callable(name, fn, what):
+    if not callable(fn):
+        raise CallableOutputError(f"{name} must be a {what}, got {type(fn).__name__}")
 
-    Plain Gauss-Jacobi (``end`` = 0, corr = 0) unless an exponent e has
-    e + 1 < 0.01.  Then the weight carries a mass ~ 1/(e+1) next to that end and a
-    Gauss sum loses eps * mass absolute, which the integrals we need cannot
-    afford: they are O(1) because the integrand nearly vanishes there
-    (P_k^{(a,b)}(+1) ~ (a+1)/k).  We split g(x) = g(end) + (end - x) r(x):
 
-        int W g = g(end) mu_0 + int W |end - x| r,
+def _check_n(n, e, label):
+    n = check_order(n, 2 if e.kappa == 1 else 1,
+                    f"{label} for index 1 (both ends singular)" if e.kappa == 1 else label)
+    if n > N_MAX:
+        raise InvalidOrderError(
+            f"n{label} = {n} is beyond the limit {N_MAX}: the projection is dense (O(n^2) "
+            f"work and memory per interval: ~1 s at n = {N_MAX}); a solution that needs more "
+            "terms has a singularity the basis does not carry (a kink: pass breaks=; a fixed "
+            "singularity in the kernel) or should be split into intervals")
+    return n
 
-    the first term with the exact moment and end value (from the exact e + 1),
-    the second by the Gauss rule of the regular weight with e + 1 in place of e,
-    rewritten as sum_j omega_j (g(x_j) - g(end)), omega_j = w'_j/|end - x_j|.
-    """
-    x: np.ndarray
-    omega: np.ndarray
-    end: int
-    corr: float
-    a: float
-    b: float
-    a_p1: float
-    b_p1: float
 
-    @classmethod
-    def build(cls, q, a, b, a_p1, b_p1):
-        if min(a_p1, b_p1) >= _NEAR_MINUS_ONE:
-            x, w = gauss_jacobi_cached(q, a, b)
-            return cls(x, w, 0, 0.0, a, b, a_p1, b_p1)
-        mu0 = jacobi_moment_shifted(a_p1, b_p1)
-        if a_p1 < b_p1:                       # the mass sits at x = +1
-            x, w = gauss_jacobi_cached(q, a_p1, b)
-            omega = w / (1.0 - x)
-            end = 1
+def _check_totals(total, exps, multi):
+    """One total per interval with kappa = 1, None elsewhere."""
+    J = len(exps)
+    totals = per_interval("total", total, J)
+    out = []
+    for j, (t, e) in enumerate(zip(totals, exps)):
+        where = f" on interval {j}" if multi else ""
+        if e.kappa == 1:
+            if t is None:
+                raise SideConditionError(
+                    f"total (= int psi{where}) is required when both ends{where} are singular "
+                    "(index 1)")
+            out.append(check_finite_real("total", t, SideConditionError))
         else:
-            x, w = gauss_jacobi_cached(q, a, b_p1)
-            omega = w / (1.0 + x)
-            end = -1
-        return cls(x, omega, end, float(mu0 - omega.sum()), a, b, a_p1, b_p1)
-
-    def end_values(self, n):
-        """P_k^{(a,b)}(end), k < n, to full relative precision."""
-        return jacobi_end_values(n, self.a_p1 if self.end > 0 else self.b_p1, self.end)
-
-    def project(self, g, g_end, n):
-        """sum_j omega_j g_j P_k(x_j) + g_end P_k(end) corr, k < n: <g, P_k>_W."""
-        out = jacobi_project(self.omega * g, self.a, self.b, self.x, n)
-        if self.end:
-            out = out + (g_end * self.corr) * self.end_values(n)
-        return out
+            if t is not None:
+                raise SideConditionError(
+                    f"total must not be given{where}: the index there is {e.kappa} (a total "
+                    "is only for both ends singular, index 1; pass None for that interval)")
+            out.append(None)
+    return out
 
 
 # --------------------------------------------------------------------------
-# quadrature for projections onto P_m^{(-alpha,-beta)}
+# residual checks
 # --------------------------------------------------------------------------
-def _composite_rule(q, alpha, beta, breaks):
-    """Nodes/weights for int (1-s)^alpha (1+s)^beta g(s) ds, g smooth on each piece.
+def _dominant_image(piece, u):
+    """lambda sum_k c_k P_{k-kappa}^{(-alpha,-beta)}(u) (without the kappa = -1 constant)."""
+    c, k = piece.coefficients, piece.kappa
+    shifted = c[1:] if k == 1 else (c if k == 0 else np.concatenate([[0.0], c]))
+    return jacobi_series(shifted, -piece.alpha, -piece.beta, u)
 
-    Pieces split at ``breaks``; the end pieces carry the endpoint singularity in
-    their own Gauss-Jacobi rule ((0, beta) on the left, (alpha, 0) on the right),
-    the other factor is smooth there and multiplies the weights.
-    """
-    edges = np.concatenate([[-1.0], breaks, [1.0]])
-    xs, ws = [], []
-    for i in range(len(edges) - 1):
-        lo, hi = edges[i], edges[i + 1]
-        half = 0.5 * (hi - lo)
-        ea = alpha if i == len(edges) - 2 else 0.0
-        eb = beta if i == 0 else 0.0
-        u, wu = gauss_jacobi_cached(q, ea, eb)
-        # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
-        s = lo + half * (u + 1.0)
-        w = wu * half ** (1.0 + ea + eb)
-        if ea == 0.0:  # the right end is not in this piece: (1-s)^alpha is smooth here
-            w = w * (1.0 - s) ** alpha
-        if eb == 0.0:
-            w = w * (1.0 + s) ** beta
-        xs.append(s)
-        ws.append(w)
-    return np.concatenate(xs), np.concatenate(ws)
+
+def _check_residual(f, unknowns, pieces, at_checks, fscale):
+    """Warn when the equation, at points between the collocation nodes, is not satisfied to
+    RESIDUAL_TOL of its scale: catches an unresolved f or kernel and kernels outside the
+    method's class.  Only where the collocation is not exact by construction (a kernel or
+    several intervals; alone, the dominant operator maps the basis exactly); costs f at 7
+    points per interval, the rest comes with the assembly."""
+    worst, where = 0.0, None
+    for i, (ui, pi, other) in enumerate(zip(unknowns, pieces, at_checks)):
+        x = ui.interval.real(_CHECK_POINTS)
+        lhs = ui.lam * _dominant_image(pi, _CHECK_POINTS) + other
+        fx = call_checked(f, "f", (x,), x.shape)
+        if pi.consistency is not None:
+            fx = fx - pi.consistency
+        scale = max(fscale, float(np.max(np.abs(lhs))), np.finfo(float).tiny)
+        r = float(np.max(np.abs(fx - lhs))) / scale
+        if r > worst:
+            worst, where = r, i
+    if worst > RESIDUAL_TOL:
+        on = f" on interval {where}" if len(unknowns) > 1 else ""
+        warnings.warn(
+            f"sie.solve: the solution leaves a residual of {worst:.2g} (relative to f) in the "
+            f"equation between the collocation nodes{on}: n = {[u.n for u in unknowns]} does "
+            "not resolve f or the kernel (increase n; pass breaks= at kinks of f), or the "
+            "kernel is not smooth", ResidualWarning, stacklevel=3)
 
 
 # --------------------------------------------------------------------------
-# the solution object
+# the solver
 # --------------------------------------------------------------------------
-@dataclass(eq=False)
-class Solution:
-    """Solution psi = w phi of the SIE; call it to evaluate psi.
+def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), intervals=None):
+    """Solve a psi + (b/pi) PV int_L psi/(t-s) dt + int_L k(s,t) psi(t) dt = f(s) on L.
 
-    Attributes
+    Parameters
     ----------
-    alpha, beta : float
-        Exponents of w(s) = (1-s)^alpha (1+s)^beta.
-    kappa : int
-        Index -(alpha + beta).
-    n : int
-        Number of Jacobi coefficients of phi.
-    coefficients : ndarray
-        c_k with phi = sum_k c_k P_k^{(alpha,beta)} (scipy's normalisation).
-    consistency : float or None
-        kappa = -1: the weighted mean of g = f - int k psi against
-        (1-s)^{-alpha}(1+s)^{-beta}, i.e. int g w^{-1} ds / int w^{-1} ds, in
-        units of f; zero iff the equation is solvable.  None for kappa != -1.
+    f : callable
+        Vectorised right-hand side f(s) (s in real coordinates).
     a, b : float
-        The coefficients of the equation.
+        Coefficients; b != 0.  cot(pi alpha0) = -a/b fixes the exponents.
+    n : int or sequence of int
+        Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
+        ``N_MAX``.
+    left, right : {"bounded", "singular"} or a sequence of them
+        Behaviour of psi at the left and right end of each interval.
+    kernel : callable, optional
+        Kernel k(s, t), vectorised over two arrays of equal shape, bounded on L x L.
+    total : float or sequence, optional
+        int psi over each interval with kappa = 1 (both ends singular); None (or absent)
+        for the others.
+    breaks : sequence of float, optional
+        Points strictly inside L where f or one of its derivatives jumps.
+    intervals : sequence of (c, d), optional
+        L as disjoint ascending intervals; default the single interval [-1, 1].  With it,
+        the per-interval attributes of the :class:`Solution` are tuples.
+
+    Returns
+    -------
+    Solution
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError,
+    SideConditionError, InvalidBreakpointError, InvalidIntervalError,
+    PerIntervalArgumentError, KernelSingularityError, CallableOutputError
+
+    Warns
+    -----
+    InconsistentEquationWarning
+        Index -1 on an interval and f violates its solvability condition.
+    ResidualWarning
+        The equation is not satisfied between the nodes (unresolved f or kernel).
+
+    Notes
+    -----
+    Erdogan, Gupta & Cook (1973); Krenk, Quart. Appl. Math. 33 (1975) 225; Muskhelishvili,
+    Singular Integral Equations (1953).  Spectral convergence for analytic f and k.
     """
-    alpha: float
-    beta: float
-    kappa: int
-    n: int
-    coefficients: np.ndarray
-    consistency: float | None
-    a: float
-    b: float
-    _exp: Exponents = field(repr=False)
-    _matrix: np.ndarray | None = field(default=None, repr=False)
-    _remainder_factory: object = field(default=None, repr=False)
-    _remainder_cache: object = field(default=None, repr=False)
+    a, b = _check_coefficients(a, b)
+    _check_callable("f", f, "vectorised callable f(s)")
+    if kernel is not None:
+        _check_callable("kernel", kernel, "callable k(s, t) or None")
+    multi = intervals is not None
+    ivs = check_intervals(intervals)
+    J = len(ivs)
+    lefts = [_check_ends("left", v) for v in per_interval("left", left, J)]
+    rights = [_check_ends("right", v) for v in per_interval("right", right, J)]
+    exps = [sie_exponents(a, b, l, r) for l, r in zip(lefts, rights)]
+    ns = [_check_n(v, e, f"[{j}]" if multi else "")
+          for j, (v, e) in enumerate(zip(per_interval("n", n, J), exps))]
+    totals = _check_totals(total, exps, multi)
+    brs = split_breaks(breaks, ivs)
 
-    @property
-    def _remainder(self):
-        """The breaks correction (:mod:`sie.remainder`), built on first use: a solve whose
-        caller only needs ``integral()`` or ``consistency`` (the contact layer's root
-        searches) never pays for it."""
-        if self._remainder_cache is None and self._remainder_factory is not None:
-            self._remainder_cache = self._remainder_factory()
-        return self._remainder_cache
+    # 1. unknowns
+    unknowns = [IntervalUnknown.build(iv, e, nj, br, t, b)
+                for iv, e, nj, br, t in zip(ivs, exps, ns, brs, totals)]
+    if kernel is not None:
+        probe_kernel(kernel, unknowns)
+    # 2. right-hand side
+    fvals = [u.sample(f, "f") for u in unknowns]
+    fhat = [u.project(v) for u, v in zip(unknowns, fvals)]
+    # 3. assembly and solve
+    sys_ = assemble_and_solve(unknowns, fhat, b, kernel, _CHECK_POINTS)
+    # 4. result
+    pieces = []
+    for u, c, cons in zip(unknowns, sys_.coefficients, sys_.consistency):
+        c = _chop_noise(c, u.exp)
+        c.flags.writeable = False
+        pieces.append(IntervalSolution(u.interval, u.exp, u.n, c, cons))
+    fscale = max(float(np.max(np.abs(v))) for v in fvals)
+    for j, p in enumerate(pieces):
+        if p.consistency is not None and abs(p.consistency) > CONSISTENCY_TOL * max(fscale, 1e-300):
+            on = f" on interval {j}" if multi else ""
+            warnings.warn(
+                f"sie.solve: both ends are bounded{on} (index -1) and f violates the "
+                f"solvability condition: consistency = {p.consistency:.3g} (max|f| = "
+                f"{fscale:.3g}); the returned psi solves the equation with that weighted mean "
+                "taken out of f", InconsistentEquationWarning, stacklevel=2)
+    if any(br.size for br in brs):
+        pieces = _with_remainders(pieces, unknowns, fvals, sys_, f, a, b, kernel)
+    elif sys_.at_checks is not None:
+        _check_residual(f, unknowns, pieces, sys_.at_checks, fscale)
+    return Solution(tuple(pieces), a, b, multi, sys_.matrix)
 
-    # -- psi and phi ------------------------------------------------------
-    def _points(self, s, name="s"):
-        s = np.asarray(s, dtype=float)
-        if not np.all(np.isfinite(s)):
-            raise EvaluationPointError(f"{name} must be finite real numbers")
-        return s
 
-    def phi(self, s):
-        """phi(s) = psi(s)/w(s) for s in [-1, 1] (a polynomial of degree n-1,
-        plus the pointwise remainder correction when ``breaks`` were given)."""
-        s = self._points(s)
-        if np.any(np.abs(s) > 1.0):
-            raise EvaluationPointError("phi is defined on [-1, 1]; got points outside")
-        out = jacobi_series(self.coefficients, self.alpha, self.beta, s)
-        if self._remainder is not None:
-            out = out + self._remainder.phi(s)
-        return out
+def _with_remainders(pieces, unknowns, fvals, sys_, f, a, b, kernel):
+    """Attach the breaks correction (built on first use) to every piece with breaks."""
+    out = []
+    for i, (p, u, fs, g) in enumerate(zip(pieces, unknowns, fvals, sys_.g_hat)):
+        if u.breaks.size == 0:
+            out.append(p)
+            continue
+        out.append(IntervalSolution(p.interval, p.exp, p.n, p.coefficients, p.consistency,
+                                    _remainder_factory(p, u, fs, g, pieces, unknowns, f, a, b,
+                                                       kernel)))
+    return out
 
-    def weight(self, s):
-        """w(s) = (1-s)^alpha (1+s)^beta."""
-        s = np.asarray(s, dtype=float)
-        return (1.0 - s) ** self.alpha * (1.0 + s) ** self.beta
 
-    def __call__(self, s):
-        """psi(s); zero outside [-1, 1]; a singular end itself raises."""
-        s = self._points(s)
-        inside = np.abs(s) < 1.0
-        for end, expo in ((1.0, self.alpha), (-1.0, self.beta)):
-            if expo < 0 and np.any(s == end):
-                raise EvaluationPointError(
-                    f"psi is infinite at s = {end:+g} (singular end, exponent {expo:.6g})")
-        out = np.zeros(s.shape)
-        ends = (np.abs(s) == 1.0)
-        if np.any(inside):
-            si = s[inside]
-            out[inside] = self.weight(si) * self.phi(si)
-        if np.any(ends):  # bounded ends: psi = 0 there
-            out[ends] = 0.0
-        return out
+def _remainder_factory(piece, u, fs, g_hat, pieces, unknowns, f, a, b, kernel):
+    from .remainder import InversionRemainder
+    iv = u.interval
 
-    # -- functionals -----------------------------------------------------
-    def integral(self):
-        """int_{-1}^{1} psi = mu_0 c_0 (orthogonality of P_k, k >= 1, to 1).
+    def f_local(x):
+        return f(iv.real(x))
 
-        Exact also with ``breaks``: the remainder correction inverts components
-        P_m^{(-alpha,-beta)}, m >= n - kappa, into P_k^{(alpha,beta)}, k >= n >= 1,
-        all orthogonal to 1 (and kappa = 1 fixes its null-space part to integral 0)."""
-        total = jacobi_moment_shifted(self._exp.alpha_p1, self._exp.beta_p1) * self.coefficients[0]
-        return float(total)
+    other = None
+    if len(unknowns) > 1 or kernel is not None:
+        def other(x):
+            xr = iv.real(x)
+            out = np.zeros(np.shape(x))
+            for uj, pj in zip(unknowns, pieces):
+                if uj is not u:
+                    out += coupling_images(xr, uj, b) @ pj.coefficients
+                if kernel is not None:
+                    out += kernel_images(xr, uj, kernel) @ pj.coefficients
+            return out
 
-    def endpoint_value(self, end):
-        """phi(+1) or phi(-1): the factor that stress-intensity factors are built from."""
-        if end not in (1, -1):
-            raise EvaluationPointError(f"end must be +1 or -1, got {end!r}")
-        return float(self.phi(np.array([float(end)]))[0])
-
-    @property
-    def condition(self):
-        """2-norm condition number of the (row-scaled) collocation system."""
-        if self._matrix is None:
-            return 1.0
-        return float(np.linalg.cond(self._matrix))
-
-    # -- Cauchy transform -------------------------------------------------
-    def _dominant_image(self, x):
-        """sum_k c_k P_{k-kappa}^{(-alpha,-beta)}(x)."""
-        c = self.coefficients
-        k = self.kappa
-        if k == 1:
-            cs = c[1:]
-        elif k == 0:
-            cs = c
-        else:
-            cs = np.concatenate([[0.0], c])
-        return jacobi_series(cs, -self.alpha, -self.beta, x)
-
-    def cauchy(self, x):
-        """(1/pi) PV int_{-1}^{1} psi(t)/(t - x) dt for any real x != +-1.
-
-        Inside: H[w P_k] = cot(pi alpha) w P_k - 2^{-kappa}/sin(pi alpha) P_{k-kappa}^{(-alpha,-beta)}
-        (sie-math.md item 1).  Outside, near the interval: the same functions
-        continued analytically, H[psi](x) = [G(x) - 2^{-kappa} sum c_k P_{k-kappa}^{(-alpha,-beta)}(x)] / sin(pi alpha),
-        G(x) = (x-1)^alpha (x+1)^beta phi(x) for x > 1 and (-1)^kappa |x-1|^alpha |x+1|^beta phi(x)
-        for x < -1 (the polynomial part of G at infinity is the second term);
-        far away (where that difference cancels) a Gauss-Jacobi rule on the
-        smooth integrand w phi/(t - x), sized from the Bernstein ellipse.
-        """
-        x = self._points(x, "x")
-        if np.any(np.abs(x) == 1.0):
-            raise EvaluationPointError(
-                "the Cauchy transform is evaluated at x = +-1, where it is infinite or "
-                "undefined; use points inside (-1, 1) or outside [-1, 1]")
-        out = np.empty(x.shape)
-        e = self._exp
-        scale = 2.0 ** (-self.kappa)
-        inside = np.abs(x) < 1.0
-        if np.any(inside):
-            xi = x[inside]
-            out[inside] = e.cot * self(xi) - scale / e.sin * self._dominant_image(xi)
-            if self._remainder is not None:
-                out[inside] = self._remainder.cauchy_inside(xi, self(xi))
-        outside = ~inside
-        if np.any(outside):
-            out[outside] = self._cauchy_outside(x[outside])
-        return out
-
-    def _cauchy_outside(self, x):
-        e = self._exp
-        ax = np.abs(x)
-        rho_b = ax + np.sqrt((ax - 1.0) * (ax + 1.0))       # Bernstein ellipse through x
-        # closed form loses ~ rho_b^(n) digits to cancellation; use it only while that is < 1e2
-        near = self.n * np.log(rho_b) <= math.log(1e2)
-        out = np.empty(x.shape)
-        if np.any(near):
-            xn = x[near]
-            base = np.abs(xn - 1.0) ** self.alpha * np.abs(xn + 1.0) ** self.beta
-            sign = np.where(xn < 0, (-1.0) ** self.kappa, 1.0)
-            g = sign * base * jacobi_series(self.coefficients, self.alpha, self.beta, xn)
-            out[near] = (g - 2.0 ** (-self.kappa) * self._dominant_image(xn)) / e.sin
-        far = ~near
-        if np.any(far):
-            xf = x[far]
-            # Gauss: error ~ rho_b^(-2 m) for the analytic part; the polynomial needs m >= n/2
-            need = int(np.ceil(self.n / 2 + 40.0 / (2.0 * np.log(rho_b[far]).min()))) + 8
-            t, w = gauss_jacobi_cached(max(need, self.n), self.alpha, self.beta)
-            wf = w * jacobi_series(self.coefficients, self.alpha, self.beta, t)
-            out[far] = (wf[None, :] / (t[None, :] - xf[:, None])).sum(axis=1) / math.pi
-        if self._remainder is not None:
-            out = out + self._remainder.cauchy_outside(x)
-        return out
+    return lambda: InversionRemainder.build(piece, a, b, f_local, other, u.breaks, u.s, u.ws,
+                                            fs, g_hat)
 
 
 def _chop_noise(c, e, factor=256.0, run=8):
@@ -398,6 +287,7 @@ def _chop_noise(c, e, factor=256.0, run=8):
     threshold and are left alone.  Cf. Aurentz & Trefethen, "Chopping a
     Chebyshev series", ACM TOMS 43 (2017).
     """
+    c = np.array(c, dtype=float)
     if c.size <= run:
         return c
     size = np.abs(c) * np.sqrt(jacobi_norms(c.size, max(e.alpha, -0.5), max(e.beta, -0.5)))
@@ -405,87 +295,16 @@ def _chop_noise(c, e, factor=256.0, run=8):
     if top == 0.0:
         return c
     small = size <= factor * np.finfo(float).eps * top
-    # first k with small[k:k+run] all True
     window = np.convolve(small.astype(int), np.ones(run, dtype=int), mode="valid")
     hits = np.flatnonzero(window == run)
-    if hits.size == 0:
-        return c
-    c = c.copy()
-    c[hits[0]:] = 0.0
+    if hits.size:
+        c[hits[0]:] = 0.0
     return c
 
 
-def _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h):
-    """khat[m, k] = <int k(., t) w(t) P_k^{(alpha,beta)}(t) dt, P_m^{(-alpha,-beta)}> / h_m.
-
-    Inner integral over t by the (end-corrected) Gauss rule of w; outer
-    projection by the same rule as f (``rule``; None means the composite rule
-    ``s, ws`` used with breaks).  Corrected ends need the kernel on the end
-    lines s = +-1 or t = +-1, so it is evaluated on the grid augmented by them.
-    """
-    alpha, beta = e.alpha, e.beta
-    trule = _WeightedRule.build(n + _KERNEL_EXTRA, alpha, beta, e.alpha_p1, e.beta_p1)
-    s_end = rule.end if rule is not None else 0
-    s_aug = np.concatenate([s, [float(s_end)]]) if s_end else s
-    t_aug = np.concatenate([trule.x, [float(trule.end)]]) if trule.end else trule.x
-    S, T = np.meshgrid(s_aug, t_aug, indexing="ij")
-    kst = call_checked(kernel, "kernel", (S, T), S.shape)
-    nt = trule.x.size
-    Pt = jacobi_vandermonde(n, alpha, beta, trule.x)               # (nt, n)
-    G = (kst[:, :nt] * trule.omega) @ Pt                          # (q[+1], n)
-    if trule.end:
-        G += np.outer(kst[:, nt], trule.corr * trule.end_values(n))
-    q = s.size
-    Ps = jacobi_vandermonde(m_eq, -alpha, -beta, s)               # (q, m_eq)
-    khat = (Ps.T * ws) @ G[:q]
-    if s_end:
-        khat += np.outer(rule.corr * rule.end_values(m_eq), G[q])
-    return khat / h[:, None]
-
-
-def _check_equation(f, a, b, left, right):
-    """Validate a, b, the end choices and f; return (a, b, exponents)."""
-    a = check_finite_real("a", a, InvalidCoefficientError)
-    b = check_finite_real("b", b, InvalidCoefficientError)
-    if b == 0.0:
-        raise InvalidCoefficientError(
-            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
-    for name, v in (("left", left), ("right", right)):
-        if v not in END_CHOICES:
-            raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
-    if f is not None and not callable(f):
-        raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
-    return a, b, sie_exponents(a, b, left, right)
-
-
-def _lambda(e, b):
-    """lambda = -2^{-kappa} b / sin(pi alpha): a w P_k + b H[w P_k] = lambda P_{k-kappa}^{(-alpha,-beta)}."""
-    return -(2.0 ** (-e.kappa)) * b / e.sin
-
-
-def _project_rhs(f, e, m_eq, br, count):
-    """f_m = <f, P_m^{(-alpha,-beta)}> / h_m for m < count, by the Gauss rule of m_eq nodes
-    (end-mass corrected) or, with breaks, the composite rule.
-
-    Returns (rule or None, nodes, weights, f at nodes, f_m, h_m)."""
-    alpha, beta = e.alpha, e.beta
-    h = jacobi_norms(count, -alpha, -beta)
-    h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
-    if br.size == 0:
-        rule = _WeightedRule.build(m_eq, -alpha, -beta, e.alpha_m1, e.beta_m1)
-        s, ws = rule.x, rule.omega
-    else:
-        rule = None
-        s, ws = _composite_rule(m_eq + _EXTRA_PER_PIECE, -alpha, -beta, br)
-    fs = call_checked(f, "f", (s,), s.shape)
-    if rule is not None and rule.end:
-        f_end = float(call_checked(f, "f", (np.array([float(rule.end)]),), (1,))[0])
-        fhat = rule.project(fs, f_end, count) / h
-    else:
-        fhat = jacobi_project(ws * fs, -alpha, -beta, s, count) / h
-    return rule, s, ws, fs, fhat, h
-
-
+# --------------------------------------------------------------------------
+# functionals without the solution (searches over one interval)
+# --------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Functionals:
     """What a search over the interval needs, without forming the solution.
@@ -504,29 +323,38 @@ class Functionals:
     kappa: int
 
 
+def _unit_unknown(a, b, n, left, right, breaks, count=None):
+    """Validated exponents and, for index <= 0, the one-interval unknown on [-1, 1] whose
+    rule gives the projections on P_m, m < count (default: those the functionals need);
+    None for index 1 (nothing to project)."""
+    a, b = _check_coefficients(a, b)
+    e = sie_exponents(a, b, _check_ends("left", left), _check_ends("right", right))
+    n = _check_n(n, e, "")
+    br = split_breaks(breaks, check_intervals(None))[0]
+    if e.kappa == 1:
+        return e, None
+    count = (1 if e.kappa == 0 else 2) if count is None else count
+    return e, IntervalUnknown.build(Interval(-1.0, 1.0), e, n, br, None, b, count=count)
+
+
 def dominant_functionals(f, *, a, b, n, left, right, breaks=()):
-    """int psi and the solvability residual of a psi + (b/pi) PV int psi/(t-s) dt = f,
-    exactly as :func:`solve` (same rule, same n) would return them, at the cost of one
-    Gauss sum: int psi = mu_0 c_0 with c_0 = f_0/lambda (kappa = 0) or f_1/lambda
+    """int psi and the solvability residual of a psi + (b/pi) PV int psi/(t-s) dt = f on
+    [-1, 1], exactly as :func:`solve` (same rule, same n) would return them, at the cost of
+    one Gauss sum: int psi = mu_0 c_0 with c_0 = f_0/lambda (kappa = 0) or f_1/lambda
     (kappa = -1), and the residual is f_0 (kappa = -1).
 
     For searches over the interval (free contact ends), where the full solution is only
     needed at the end.  No kernel.
     """
-    a, b, e = _check_equation(f, a, b, left, right)
-    n = check_order(n, 2 if e.kappa == 1 else 1)
-    br = _check_breaks(breaks)
-    kappa = e.kappa
-    if kappa == 1:
+    _check_callable("f", f, "vectorised callable f(s)")
+    e, u = _unit_unknown(a, b, n, left, right, breaks)
+    if u is None:
         return Functionals(None, None, e.alpha, e.beta, 1)
-    m_eq = n - kappa
-    count = 1 if kappa == 0 else 2
-    _, _, _, _, fhat, _ = _project_rhs(f, e, m_eq, br, count)
-    mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)
-    lam = _lambda(e, b)
-    if kappa == 0:
-        return Functionals(float(mu0 * fhat[0] / lam), None, e.alpha, e.beta, 0)
-    return Functionals(float(mu0 * fhat[1] / lam), float(fhat[0]), e.alpha, e.beta, -1)
+    fhat = u.project(u.sample(f, "f"))
+    scale = u.mu0 / u.lam
+    if e.kappa == 0:
+        return Functionals(float(scale * fhat[0]), None, e.alpha, e.beta, 0)
+    return Functionals(float(scale * fhat[1]), float(fhat[0]), e.alpha, e.beta, -1)
 
 
 class FunctionalsRule:
@@ -539,16 +367,12 @@ class FunctionalsRule:
     """
 
     def __init__(self, *, a, b, n, left, right):
-        a, b, e = _check_equation(None, a, b, left, right)
-        n = check_order(n, 2 if e.kappa == 1 else 1)
-        self.a, self.b, self.n, self.exponents = a, b, n, e
+        e, u = _unit_unknown(a, b, n, left, right, (), count=2)
+        self.a, self.b, self.n, self.exponents = float(a), float(b), int(n), e
         self.kappa = e.kappa
-        if self.kappa == 1:
+        if u is None:
             return
-        m_eq = n - self.kappa
-        rule = _WeightedRule.build(m_eq, -e.alpha, -e.beta, e.alpha_m1, e.beta_m1)
-        h = jacobi_norms(2, -e.alpha, -e.beta)
-        h[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
+        rule, h = u.rule, u.norms
         x = rule.x
         p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)   # P_1^{(-alpha,-beta)}
         p_end = rule.end_values(2) if rule.end else np.zeros(2)
@@ -556,14 +380,13 @@ class FunctionalsRule:
         self.end = rule.end
         self._w = (rule.omega / h[0], rule.omega * p1 / h[1])
         self._w_end = (rule.corr * p_end[0] / h[0], rule.corr * p_end[1] / h[1])
-        self._scale = jacobi_moment_shifted(e.alpha_p1, e.beta_p1) / _lambda(e, b)
+        self._scale = u.mu0 / u.lam
 
     def __call__(self, f) -> Functionals:
         e = self.exponents
         if self.kappa == 1:
             return Functionals(None, None, e.alpha, e.beta, 1)
-        if not callable(f):
-            raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+        _check_callable("f", f, "vectorised callable f(s)")
         fs = call_checked(f, "f", (self.nodes,), self.nodes.shape)
         f_end = 0.0
         if self.end:
@@ -573,100 +396,3 @@ class FunctionalsRule:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
         f1 = float(self._w[1] @ fs + self._w_end[1] * f_end)
         return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
-
-
-# --------------------------------------------------------------------------
-# the solver
-# --------------------------------------------------------------------------
-def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=()):
-    """Solve a psi + (b/pi) PV int psi/(t-s) dt + int k(s,t) psi(t) dt = f on (-1, 1).
-
-    Parameters
-    ----------
-    f : callable
-        Vectorised right-hand side f(s).
-    a, b : float
-        Coefficients; b != 0.  cot(pi alpha0) = -a/b fixes the exponents.
-    n : int
-        Number of Jacobi coefficients of phi (n >= 2 when kappa = 1).
-    left, right : {"bounded", "singular"}
-        Behaviour of psi at s = -1 and s = +1.
-    kernel : callable, optional
-        Smooth kernel k(s, t), vectorised over two arrays of equal shape.
-    total : float, optional
-        int psi; required when kappa = 1, rejected otherwise.
-    breaks : sequence of float, optional
-        Points in (-1, 1) where f or one of its derivatives jumps.
-
-    Returns
-    -------
-    Solution
-
-    Notes
-    -----
-    Collocation at the roots of P_{n-kappa}^{(-alpha,-beta)} (Erdogan, Gupta &
-    Cook 1973; Krenk 1975): spectral convergence for analytic f and k.
-    """
-    a, b, e = _check_equation(f, a, b, left, right)
-    if kernel is not None and not callable(kernel):
-        raise CallableOutputError(f"kernel must be a callable k(s, t) or None, got {type(kernel).__name__}")
-    kappa = e.kappa
-    n = check_order(n, 2 if kappa == 1 else 1,
-                    " for index 1 (both ends singular)" if kappa == 1 else "")
-    if kappa == 1:
-        if total is None:
-            raise SideConditionError(
-                "total (= int psi) is required when both ends are singular (index 1)")
-        total = check_finite_real("total", total, SideConditionError)
-    elif total is not None:
-        raise SideConditionError(
-            f"total must not be given for index {kappa} (it is only for both ends singular, index 1)")
-    br = _check_breaks(breaks)
-
-    alpha, beta = e.alpha, e.beta
-    lam = _lambda(e, b)
-    mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)          # int w, exact
-    m_eq = n - kappa                           # projected equations, m = 0..m_eq-1
-    rule, s, ws, fs, fhat, h = _project_rhs(f, e, m_eq, br, m_eq)
-
-    matrix = None
-    if kernel is None:
-        c = np.empty(n)
-        if kappa == 1:
-            c[0] = total / mu0
-            c[1:] = fhat / lam
-        elif kappa == 0:
-            c[:] = fhat / lam
-        else:
-            c[:] = fhat[1:] / lam
-        kc = None
-    else:
-        khat = _kernel_projection(kernel, n, m_eq, e, rule, s, ws, h)
-        A = khat.copy()
-        for m in range(m_eq):
-            k = m + kappa
-            if 0 <= k < n:
-                A[m, k] += lam
-        rhs = fhat.copy()
-        if kappa == 1:
-            side = np.zeros(n)
-            side[0] = abs(lam)                           # row scaled like the others
-            A = np.vstack([side, A])
-            rhs = np.concatenate([[abs(lam) * total / mu0], rhs])
-        elif kappa == -1:
-            A, rhs = A[1:], rhs[1:]
-        c = np.linalg.solve(A, rhs)
-        matrix = A
-        kc = khat @ c
-    c = _chop_noise(c, e)
-    consistency = None
-    if kappa == -1:
-        consistency = float(fhat[0] - (kc[0] if kc is not None else 0.0))
-
-    sol = Solution(alpha=alpha, beta=beta, kappa=kappa, n=n, coefficients=c,
-                   consistency=consistency, a=a, b=b, _exp=e, _matrix=matrix)
-    if br.size:
-        from .remainder import InversionRemainder
-        sol._remainder_factory = lambda: InversionRemainder.build(sol, f, kernel, br, s, ws, fs,
-                                                                  fhat, kc, lam)
-    return sol

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 from mpmath import mp
 
-from sie.solver import _WeightedRule, sie_exponents
+from sie.exponents import sie_exponents
+from sie.quadrature import WeightedRule
 from sie.special import jacobi_end_values, jacobi_moment_shifted
 
 mp.dps = 40
@@ -57,7 +58,7 @@ def test_end_corrected_rule_integrates_polynomials(end, ep1):
         a, b, a_p1, b_p1 = ep1 - 1.0, other, ep1, 1.0 + other
     else:
         a, b, a_p1, b_p1 = other, ep1 - 1.0, 1.0 + other, ep1
-    rule = _WeightedRule.build(12, a, b, a_p1, b_p1)
+    rule = WeightedRule.build(12, a, b, a_p1, b_p1)
     assert rule.end == end
     A, B = mp.mpf(a_p1) - 1, mp.mpf(b_p1) - 1
     for k in range(1, 20):

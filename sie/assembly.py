@@ -1,0 +1,173 @@
+"""Block assembly of the collocation system on several intervals, and its solution.
+
+Unknowns c = (c^1, ..., c^J), c^j the Jacobi coefficients on interval j.  Row block i holds
+the projections of the equation on L_i onto P_m^{(-alpha_i,-beta_i)}, m < n_i - kappa_i:
+
+    diagonal block   lambda_i at (m, m + kappa_i)          (the exact dominant operator)
+    block (i, j)     b <F^j_k(v_j(s)), P_m>_i / h_m      (i != j: the Cauchy integral over L_j
+                     seen from L_i, F^j_k the exact transform of w_j P_k outside [-1, 1],
+                     :mod:`sie.cauchy`, so that close intervals keep full accuracy)
+                   + <h_j int k(s, m_j + h_j u) w_j P_k du, P_m>_i / h_m     (kernel)
+
+Side conditions as rows: kappa_i = 1 adds h_i mu_0 c^i_0 = total_i (scaled by |lambda_i|);
+kappa_i = -1 removes the row m = 0, whose residual is the solvability condition of L_i
+(Muskhelishvili 1953, sec. 110), reported as the consistency.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .cauchy import cauchy_basis
+from .errors import InvalidOrderError, KernelSingularityError, call_checked
+from .jacobi import jacobi_vandermonde
+from .quadrature import WeightedRule
+
+__all__ = ["Assembled", "assemble_and_solve", "coupling_images", "kernel_images",
+           "probe_kernel", "N_MAX_DENSE"]
+
+_KERNEL_EXTRA = 16          # t-nodes beyond n for int k(s,t) psi(t) dt
+N_MAX_DENSE = 6000          # unknowns of a dense system (several intervals or a kernel)
+
+
+def coupling_images(x, uj, b):
+    """b (1/pi) int_{L_j} w_j P_k / (t - x) dt at real x off L_j: matrix (len(x), n_j)."""
+    x = np.asarray(x, dtype=float)
+    iv = uj.interval
+    return b * cauchy_basis(uj.n, uj.weight, iv.local(x), ends=iv.local_ends(x)).real
+
+
+def kernel_images(x, uj, kernel):
+    """h_j int k(x, m_j + h_j u) w_j(u) P_k(u) du at real x: matrix (len(x), n_j).
+
+    Inner integral by the (end-mass corrected) Gauss rule of w_j with n_j + 16 nodes."""
+    e = uj.exp
+    trule = WeightedRule.build(uj.n + _KERNEL_EXTRA, e.alpha, e.beta, e.alpha_p1, e.beta_p1)
+    u = np.concatenate([trule.x, [float(trule.end)]]) if trule.end else trule.x
+    S, T = np.meshgrid(np.asarray(x, dtype=float), uj.interval.real(u), indexing="ij")
+    kst = call_checked(kernel, "kernel", (S, T), S.shape)
+    nt = trule.x.size
+    G = (kst[:, :nt] * trule.omega) @ jacobi_vandermonde(uj.n, e.alpha, e.beta, trule.x)
+    if trule.end:
+        G += np.outer(kst[:, nt], trule.corr * trule.end_values(uj.n))
+    return uj.interval.h * G
+
+
+_PROBE = (1e-3, 1e-6)
+
+
+def probe_kernel(kernel, unknowns):
+    """Refuse a kernel that grows without bound toward a pair of ends (s, t) (a fixed
+    singularity: the generalised Cauchy kernels of edge cracks and of cracks ending at an
+    interface; Erdogan, Gupta & Cook 1973; Kaya & Erdogan 1987).  It changes the exponent at
+    that end, so the Jacobi basis of the end choices cannot represent the solution and the
+    collocation converges to a wrong answer.  Sampled at distances 1e-3 and 1e-6 (relative
+    to the half-widths) inside every pair of ends."""
+    pts_s, pts_t, tags = [], [], []
+    for ui in unknowns:
+        for uj in unknowns:
+            for es in (-1.0, 1.0):
+                for et in (-1.0, 1.0):
+                    for d in _PROBE:
+                        pts_s.append(ui.interval.real(es * (1.0 - d)))
+                        pts_t.append(uj.interval.real(et * (1.0 - 1.5 * d)))
+                    tags.append((ui.interval, es, uj.interval, et))
+    S, T = np.array(pts_s), np.array(pts_t)
+    try:
+        k = np.abs(call_checked(kernel, "kernel", (S, T), S.shape)).reshape(-1, 2)
+    except Exception as exc:        # non-finite or raising next to an end: singular there
+        raise KernelSingularityError(
+            f"the kernel cannot be evaluated next to the interval ends ({exc}); the solver "
+            "needs k(s, t) bounded on L x L") from exc
+    grow = k[:, 1] > 100.0 * np.maximum(k[:, 0], 1e-300 + 1e-12 * k.max())
+    if np.any(grow):
+        i = int(np.flatnonzero(grow)[0])
+        ivs, es, ivt, et = tags[i]
+        s_end = ivs.d if es > 0 else ivs.c
+        t_end = ivt.d if et > 0 else ivt.c
+        raise KernelSingularityError(
+            f"the kernel grows without bound toward (s, t) = ({s_end!r}, {t_end!r}) "
+            f"(|k| = {k[i, 0]:.3g} at distance 1e-3, {k[i, 1]:.3g} at 1e-6): a fixed "
+            "singularity at an end, as in the generalised Cauchy kernel of an edge crack, "
+            "changes the end exponent away from the ones the end choices give; this solver "
+            "needs a kernel bounded on L x L (treat the singular part analytically, e.g. "
+            "Kaya & Erdogan 1987, or map the problem so that the kernel is bounded)")
+
+
+@dataclass(frozen=True)
+class Assembled:
+    """Coefficients per interval, the solvability residuals, the projections of
+    g = f - (coupling + kernel) psi per interval, the dense matrix (None when diagonal), and
+    (coupling + kernel) psi at the check points of each interval (None when diagonal)."""
+    coefficients: list
+    consistency: list
+    g_hat: list
+    matrix: np.ndarray | None
+    at_checks: list | None
+
+
+def _offdiagonal(unknowns, b, kernel, checks):
+    """The projected coupling + kernel operator: blocks [i][j] of shape (m_eq_i, n_j), and
+    the same operator at the local points ``checks`` of each interval (not projected), from
+    one evaluation per block."""
+    J = len(unknowns)
+    blocks = [[None] * J for _ in range(J)]
+    at_checks = [[None] * J for _ in range(J)]
+    for i, ui in enumerate(unknowns):
+        u = ui.sample_points()
+        x = ui.interval.real(np.concatenate([u, checks]))
+        for j, uj in enumerate(unknowns):
+            img = np.zeros((x.size, uj.n))
+            if i != j:
+                img += coupling_images(x, uj, b)
+            if kernel is not None:
+                img += kernel_images(x, uj, kernel)
+            blocks[i][j] = ui.project(img[:u.size])
+            at_checks[i][j] = img[u.size:]
+    return blocks, at_checks
+
+
+def assemble_and_solve(unknowns, fhat, b, kernel, checks):
+    """Solve the block system (see module docstring)."""
+    J = len(unknowns)
+    if J == 1 and kernel is None:
+        u = unknowns[0]
+        c = u.dominant_rhs_solve(fhat[0], u.total)
+        cons = float(fhat[0][0]) if u.kappa == -1 else None
+        return Assembled([c], [cons], [fhat[0]], None, None)
+    size = sum(u.n for u in unknowns)
+    if size > N_MAX_DENSE:
+        raise InvalidOrderError(
+            f"n = {[u.n for u in unknowns]} gives {size} unknowns in one dense system (several "
+            f"intervals or a kernel); at most {N_MAX_DENSE} are allowed (memory 8 N^2 bytes, "
+            "time ~N^3)")
+    blocks, at_checks = _offdiagonal(unknowns, b, kernel, checks)
+    cols = np.concatenate([[0], np.cumsum([u.n for u in unknowns])])
+    rows, rhs = [], []
+    for i, ui in enumerate(unknowns):
+        Bi = np.hstack(blocks[i])                        # (m_eq_i, size)
+        Ai = Bi.copy()
+        m = np.arange(max(0, -ui.kappa), min(ui.m_eq, ui.n - ui.kappa))   # 0 <= m + kappa < n
+        Ai[m, cols[i] + m + ui.kappa] += ui.lam
+        ri = fhat[i].copy()
+        if ui.kappa == 1:
+            side = np.zeros(size)
+            side[cols[i]] = abs(ui.lam)
+            Ai = np.vstack([side, Ai])
+            ri = np.concatenate([[abs(ui.lam) * ui.total / (ui.interval.h * ui.mu0)], ri])
+        elif ui.kappa == -1:
+            Ai, ri = Ai[1:], ri[1:]
+        rows.append(Ai)
+        rhs.append(ri)
+    A = np.vstack(rows)
+    c_all = np.linalg.solve(A, np.concatenate(rhs))
+    coeffs, cons, g_hat, checked = [], [], [], []
+    for i, ui in enumerate(unknowns):
+        coeffs.append(c_all[cols[i]:cols[i + 1]])
+        g = fhat[i] - np.hstack(blocks[i]) @ c_all
+        g_hat.append(g)
+        cons.append(float(g[0]) if ui.kappa == -1 else None)
+        checked.append(np.hstack(at_checks[i]) @ c_all)
+    return Assembled(coeffs, cons, g_hat, A, checked)

@@ -1,0 +1,104 @@
+"""Gauss-Jacobi sums for projections: the end-mass-corrected rule and the composite rule
+split at breaks."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .gaussjacobi import gauss_jacobi_cached
+from .jacobi import jacobi_project
+from .special import jacobi_end_values, jacobi_moment_shifted
+
+__all__ = ["WeightedRule", "composite_rule"]
+
+
+# --------------------------------------------------------------------------
+# Gauss-Jacobi sums with the mass of a nearly non-integrable end taken out
+# --------------------------------------------------------------------------
+_NEAR_MINUS_ONE = 0.01   # e + 1 below this: the weight's end mass ~ 1/(e+1) is split off
+
+
+@dataclass(frozen=True)
+class WeightedRule:
+    """int (1-x)^a (1+x)^b g(x) dx  ~  sum_j omega_j g(x_j) + g(end) * corr.
+
+    Plain Gauss-Jacobi (``end`` = 0, corr = 0) unless an exponent e has
+    e + 1 < 0.01.  Then the weight carries a mass ~ 1/(e+1) next to that end and a
+    Gauss sum loses eps * mass absolute, which the integrals we need cannot
+    afford: they are O(1) because the integrand nearly vanishes there
+    (P_k^{(a,b)}(+1) ~ (a+1)/k).  We split g(x) = g(end) + (end - x) r(x):
+
+        int W g = g(end) mu_0 + int W |end - x| r,
+
+    the first term with the exact moment and end value (from the exact e + 1),
+    the second by the Gauss rule of the regular weight with e + 1 in place of e,
+    rewritten as sum_j omega_j (g(x_j) - g(end)), omega_j = w'_j/|end - x_j|.
+    """
+    x: np.ndarray
+    omega: np.ndarray
+    end: int
+    corr: float
+    a: float
+    b: float
+    a_p1: float
+    b_p1: float
+
+    @classmethod
+    def build(cls, q, a, b, a_p1, b_p1):
+        if min(a_p1, b_p1) >= _NEAR_MINUS_ONE:
+            x, w = gauss_jacobi_cached(q, a, b)
+            return cls(x, w, 0, 0.0, a, b, a_p1, b_p1)
+        mu0 = jacobi_moment_shifted(a_p1, b_p1)
+        if a_p1 < b_p1:                       # the mass sits at x = +1
+            x, w = gauss_jacobi_cached(q, a_p1, b)
+            omega = w / (1.0 - x)
+            end = 1
+        else:
+            x, w = gauss_jacobi_cached(q, a, b_p1)
+            omega = w / (1.0 + x)
+            end = -1
+        return cls(x, omega, end, float(mu0 - omega.sum()), a, b, a_p1, b_p1)
+
+    def end_values(self, n):
+        """P_k^{(a,b)}(end), k < n, to full relative precision."""
+        return jacobi_end_values(n, self.a_p1 if self.end > 0 else self.b_p1, self.end)
+
+    def project(self, g, g_end, n):
+        """sum_j omega_j g_j P_k(x_j) + g_end P_k(end) corr, k < n: <g, P_k>_W."""
+        out = jacobi_project(self.omega * g, self.a, self.b, self.x, n)
+        if self.end:
+            out = out + (g_end * self.corr) * self.end_values(n)
+        return out
+
+
+# --------------------------------------------------------------------------
+# quadrature for projections onto P_m^{(-alpha,-beta)}
+# --------------------------------------------------------------------------
+def composite_rule(q, alpha, beta, breaks):
+    """Nodes/weights for int (1-s)^alpha (1+s)^beta g(s) ds, g smooth on each piece.
+
+    Pieces split at ``breaks``; the end pieces carry the endpoint singularity in
+    their own Gauss-Jacobi rule ((0, beta) on the left, (alpha, 0) on the right),
+    the other factor is smooth there and multiplies the weights.
+    """
+    edges = np.concatenate([[-1.0], breaks, [1.0]])
+    xs, ws = [], []
+    for i in range(len(edges) - 1):
+        lo, hi = edges[i], edges[i + 1]
+        half = 0.5 * (hi - lo)
+        ea = alpha if i == len(edges) - 2 else 0.0
+        eb = beta if i == 0 else 0.0
+        u, wu = gauss_jacobi_cached(q, ea, eb)
+        # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
+        s = lo + half * (u + 1.0)
+        w = wu * half ** (1.0 + ea + eb)
+        if ea == 0.0:  # the right end is not in this piece: (1-s)^alpha is smooth here
+            w = w * (1.0 - s) ** alpha
+        if eb == 0.0:
+            w = w * (1.0 + s) ** beta
+        xs.append(s)
+        ws.append(w)
+    return np.concatenate(xs), np.concatenate(ws)
+
+

@@ -1,0 +1,318 @@
+"""The solution psi of a Cauchy singular integral equation on L = union of intervals.
+
+Immutable: everything is fixed at construction; the pointwise correction for breaks
+(:mod:`sie.remainder`) and the log-potential map are computed on first use and cached.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .cauchy import cauchy_series, evaluation_points, log_potential_series
+from .errors import EvaluationPointError
+from .exponents import Exponents
+from .intervals import Interval
+from .jacobi import jacobi_series
+from .special import jacobi_moment_shifted
+
+__all__ = ["Solution", "IntervalSolution"]
+
+
+@dataclass(frozen=True, eq=False)
+class IntervalSolution:
+    """psi on one interval: psi(s) = w(u) phi(u), u = (s - m)/h, w = (1-u)^alpha (1+u)^beta.
+
+    Attributes
+    ----------
+    interval : Interval
+    alpha, beta : float
+    kappa : int
+    n : int
+    coefficients : ndarray
+        c_k with phi = sum_k c_k P_k^{(alpha,beta)} (scipy's normalisation); read-only.
+    consistency : float or None
+        kappa = -1: the weighted mean of g = f - (coupling + kernel) psi against
+        (1-u)^{-alpha}(1+u)^{-beta}, in units of f; zero iff the equation is solvable.
+    """
+    interval: Interval
+    exp: Exponents = field(repr=False)
+    n: int
+    coefficients: np.ndarray
+    consistency: float | None
+    _remainder_factory: object = field(default=None, repr=False)
+
+    @property
+    def alpha(self) -> float:
+        return self.exp.alpha
+
+    @property
+    def beta(self) -> float:
+        return self.exp.beta
+
+    @property
+    def kappa(self) -> int:
+        return self.exp.kappa
+
+    @functools.cached_property
+    def weight_data(self):
+        from .cauchy import Weight
+        return Weight.from_exponents(self.exp)
+
+    @functools.cached_property
+    def remainder(self):
+        """The breaks correction, built on first use (None without breaks)."""
+        return self._remainder_factory() if self._remainder_factory is not None else None
+
+    def phi_local(self, u):
+        out = jacobi_series(self.coefficients, self.alpha, self.beta, u)
+        if self.remainder is not None:
+            out = out + self.remainder.phi(u)
+        return out
+
+    def weight_local(self, u):
+        return (1.0 - u) ** self.alpha * (1.0 + u) ** self.beta
+
+    def psi_local(self, u):
+        """psi at local u in [-1, 1]: zero at a bounded end."""
+        out = np.zeros(u.shape)
+        inside = np.abs(u) < 1.0
+        if np.any(inside):
+            ui = u[inside]
+            out[inside] = self.weight_local(ui) * self.phi_local(ui)
+        return out
+
+    def integral(self) -> float:
+        """int over the interval of psi = h mu_0 c_0 (orthogonality; exact with breaks too:
+        the remainder is orthogonal to 1)."""
+        mu0 = jacobi_moment_shifted(self.exp.alpha_p1, self.exp.beta_p1)
+        return float(self.interval.h * mu0 * self.coefficients[0])
+
+    def cauchy_local(self, v, cplx, ends=None):
+        """(1/pi) int_{-1}^{1} w phi / (u - v) du (real v: principal value inside);
+        ``ends`` = (v - 1, v + 1) from the real coordinate."""
+        out = cauchy_series(self.coefficients, self.weight_data, v, ends=ends)
+        rem = self.remainder
+        if rem is None:
+            return out if cplx else out.real
+        if cplx:
+            raise EvaluationPointError(
+                "the Cauchy transform at complex points is not available for a solution "
+                "solved with breaks= (its pointwise correction is known on the real line "
+                "only); solve without breaks and a larger n")
+        out = out.real
+        inside = np.abs(v) < 1.0
+        if np.any(inside):
+            vi = v[inside]
+            out[inside] = rem.cauchy_inside(vi, self.psi_local(vi))
+        if np.any(~inside):
+            out[~inside] = out[~inside] + rem.cauchy_outside(v[~inside])
+        return out
+
+    def log_local(self, v, ends=None):
+        """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v."""
+        if self.remainder is not None:
+            raise EvaluationPointError(
+                "log_potential is not available for a solution solved with breaks= (its "
+                "pointwise correction is known on the real line only through phi); solve "
+                "without breaks and a larger n")
+        return log_potential_series(self.coefficients, self.weight_data, v, ends)
+
+
+@dataclass(frozen=True, eq=False)
+class Solution:
+    """Solution psi of a psi + (b/pi) PV int_L psi(t)/(t-s) dt + int_L k(s,t) psi(t) dt = f(s).
+
+    Call it to evaluate psi.  Per-interval attributes (``alpha``, ``beta``, ``kappa``, ``n``,
+    ``coefficients``, ``consistency``) are scalars when :func:`sie.solve` was called without
+    ``intervals`` (one interval [-1, 1]) and tuples with one entry per interval otherwise.
+
+    Attributes
+    ----------
+    pieces : tuple of IntervalSolution
+    a, b : float
+    intervals : tuple of (c, d)
+    """
+    pieces: tuple
+    a: float
+    b: float
+    multi: bool = field(default=False, repr=False)
+    _matrix: np.ndarray | None = field(default=None, repr=False)
+
+    # -- per-interval attributes ---------------------------------------------
+    def _per(self, name):
+        vals = tuple(getattr(p, name) for p in self.pieces)
+        return vals if self.multi else vals[0]
+
+    @property
+    def intervals(self):
+        return tuple((p.interval.c, p.interval.d) for p in self.pieces)
+
+    alpha = property(lambda self: self._per("alpha"), doc="Exponent(s) at the right end(s).")
+    beta = property(lambda self: self._per("beta"), doc="Exponent(s) at the left end(s).")
+    kappa = property(lambda self: self._per("kappa"), doc="Index (indices) -(alpha + beta).")
+    n = property(lambda self: self._per("n"), doc="Number(s) of Jacobi coefficients.")
+    coefficients = property(lambda self: self._per("coefficients"),
+                            doc="c_k with phi = sum_k c_k P_k^{(alpha,beta)} (per interval).")
+    consistency = property(lambda self: self._per("consistency"),
+                           doc="Solvability residual(s) for index -1 (None elsewhere).")
+
+    @property
+    def _exp(self):
+        return self.pieces[0].exp
+
+    @property
+    def _remainder(self):
+        return self.pieces[0].remainder
+
+    # -- locating points ------------------------------------------------------
+    def _real_points(self, s, name="s"):
+        s = np.asarray(s)
+        if s.dtype.kind == "c":
+            raise EvaluationPointError(
+                f"{name} must be real (this quantity is defined on the real line); got complex")
+        try:
+            s = s.astype(float)
+        except (TypeError, ValueError):
+            raise EvaluationPointError(f"{name} must be real numbers, got {s.dtype}") from None
+        if not np.all(np.isfinite(s)):
+            raise EvaluationPointError(f"{name} must be finite real numbers")
+        return s
+
+    def _piece_of(self, s):
+        """Index of the closed interval containing each s, -1 outside L."""
+        idx = np.full(s.shape, -1, dtype=int)
+        for j, p in enumerate(self.pieces):
+            idx[p.interval.contains(s)] = j
+        return idx
+
+    def _piece(self, interval):
+        if interval is None:
+            if len(self.pieces) > 1:
+                raise EvaluationPointError(
+                    f"interval= is required: this solution lives on {len(self.pieces)} intervals")
+            return self.pieces[0]
+        if isinstance(interval, bool) or not isinstance(interval, (int, np.integer)) \
+                or not 0 <= interval < len(self.pieces):
+            raise EvaluationPointError(
+                f"interval must be an index 0..{len(self.pieces) - 1}, got {interval!r}")
+        return self.pieces[int(interval)]
+
+    def _where(self):
+        if not self.multi:
+            return "[-1, 1]"
+        return " U ".join(f"[{c:g}, {d:g}]" for c, d in self.intervals)
+
+    # -- psi and phi ------------------------------------------------------------
+    def phi(self, s):
+        """phi_j(u) = psi/w_j at s in the closed interval j, u = (s - m_j)/h_j (a polynomial of
+        degree n_j - 1, plus the pointwise remainder correction when ``breaks`` were given)."""
+        s = self._real_points(s)
+        idx = self._piece_of(s)
+        if np.any(idx < 0):
+            raise EvaluationPointError(f"phi is defined on {self._where()}; got points outside")
+        out = np.empty(s.shape)
+        for j, p in enumerate(self.pieces):
+            sel = idx == j
+            if np.any(sel):
+                out[sel] = p.phi_local(p.interval.local(s[sel]))
+        return out
+
+    def weight(self, s):
+        """w_j(u) = (1-u)^alpha_j (1+u)^beta_j at s in the closed interval j."""
+        s = self._real_points(s)
+        idx = self._piece_of(s)
+        if np.any(idx < 0):
+            raise EvaluationPointError(f"the weight is defined on {self._where()}; got points outside")
+        out = np.empty(s.shape)
+        for j, p in enumerate(self.pieces):
+            sel = idx == j
+            if np.any(sel):
+                out[sel] = p.weight_local(p.interval.local(s[sel]))
+        return out
+
+    def __call__(self, s):
+        """psi(s); zero outside L; a singular end itself raises."""
+        s = self._real_points(s)
+        out = np.zeros(s.shape)
+        for p in self.pieces:
+            iv = p.interval
+            for end, expo in ((iv.d, p.alpha), (iv.c, p.beta)):
+                if expo < 0 and np.any(s == end):
+                    raise EvaluationPointError(
+                        f"psi is infinite at s = {end:+g} (singular end, exponent {expo:.6g})")
+            sel = iv.contains(s)
+            if np.any(sel):
+                out[sel] = p.psi_local(iv.local(s[sel]))
+        return out
+
+    # -- functionals ------------------------------------------------------------
+    def integral(self, interval=None) -> float:
+        """int psi over L (``interval=None``) or over interval j (real coordinate)."""
+        if interval is None:
+            return float(sum(p.integral() for p in self.pieces))
+        return self._piece(interval).integral()
+
+    def endpoint_value(self, end, interval=None):
+        """phi_j(+1) or phi_j(-1) (local ends): the factor stress-intensity factors are
+        built from.  ``interval`` may be omitted for one interval."""
+        if end not in (1, -1):
+            raise EvaluationPointError(f"end must be +1 or -1, got {end!r}")
+        p = self._piece(interval)
+        return float(p.phi_local(np.array([float(end)]))[0])
+
+    @property
+    def condition(self):
+        """2-norm condition number of the (row-scaled) collocation system (1 when diagonal)."""
+        if self._matrix is None:
+            return 1.0
+        return float(np.linalg.cond(self._matrix))
+
+    # -- transforms -------------------------------------------------------------
+    def cauchy(self, z):
+        """(1/pi) int_L psi(t)/(t - z) dt.
+
+        Real z = x: the principal value H[psi](x) = (1/pi) PV int_L psi(t)/(t - x) dt anywhere
+        except the ends of the intervals (real result).  Complex z off L: the integral
+        (complex result); its one-sided limits on L are H[psi](x) +- i psi(x) (Plemelj).
+        Each interval's part is the exact transform of its Jacobi series (:mod:`sie.cauchy`:
+        three-term recurrence, forward near the interval from F_0 in closed form, backward
+        continued fraction away from it), so points 1e-12 from L or its ends keep full
+        accuracy.
+
+        Raises
+        ------
+        EvaluationPointError
+            z at an end, a complex z with Im z == 0 on L, non-finite z.
+        """
+        z, cplx = evaluation_points(z, self.intervals, "z")
+        flat = z.ravel()
+        out = np.zeros(flat.shape, dtype=complex if cplx else float)
+        for p in self.pieces:
+            out += p.cauchy_local(p.interval.local(flat), cplx, p.interval.local_ends(flat))
+        return out.reshape(z.shape)
+
+    def log_potential(self, x):
+        """V(x) = (1/pi) int_L psi(t) log|x - t| dt at real x (any x; finite at the ends).
+
+        dV/dx = -H[psi](x).  Per interval, with t = m + h u:
+        V_j(x) = h [(log h / pi) int w phi du + (1/pi) int w phi log|v - u| du], v = (x-m)/h;
+        the last integral in closed form through the Cauchy transform of a polynomial of
+        degree n (integration by parts, DLMF 18.9.16; :mod:`sie.cauchy`).
+
+        Raises
+        ------
+        EvaluationPointError
+            complex or non-finite x.
+        """
+        x = self._real_points(x, "x")
+        flat = x.ravel()
+        out = np.zeros(flat.shape)
+        for p in self.pieces:
+            iv = p.interval
+            mu0 = jacobi_moment_shifted(p.exp.alpha_p1, p.exp.beta_p1)
+            out += iv.h * (math.log(iv.h) / math.pi * mu0 * p.coefficients[0]
+                           + p.log_local(iv.local(flat), iv.local_ends(flat)))
+        return out.reshape(x.shape)
