@@ -14,6 +14,7 @@ import pytest
 _KNOWN_OPEN = {
     "tests/test_sie_intervals.py::test_three_intervals_polynomial[J=3 [sing,sing|bdd,sing|sing,sing] "
     "kappa=(+1,+0,+1) a/b=-1.3 b=-2 gap/width=(1e-06,5e-01) phi=(poly5,poly2,poly3) K=cos(s-t)/2 n=12,16,20]",
+    "tests/test_sie_cauchy_core.py::test_log_potential_against_mpmath[-1.0]",
 }
 
 
