@@ -8,13 +8,10 @@ xfail again, mark it on the test with its exact id and ``strict=True``.
 import pytest
 
 # Measured, not yet understood (sie 2): three intervals, one gap 1e-6 wide, with a kernel lose
-# 9e-12 in phi next to the gap (the test asks 1e-12); the log potential exactly at a singular
-# end (x = -1, beta = -alpha0) is 1.1e-12 relative off (the test asks 1e-13).  Kept strict so
-# that a fix shows up.
+# 9e-12 in phi next to the gap (the test asks 1e-12).  Kept strict so that a fix shows up.
 _KNOWN_OPEN = {
     "tests/test_sie_intervals.py::test_three_intervals_polynomial[J=3 [sing,sing|bdd,sing|sing,sing] "
     "kappa=(+1,+0,+1) a/b=-1.3 b=-2 gap/width=(1e-06,5e-01) phi=(poly5,poly2,poly3) K=cos(s-t)/2 n=12,16,20]",
-    "tests/test_sie_cauchy_core.py::test_log_potential_against_mpmath[-1.0]",
 }
 
 

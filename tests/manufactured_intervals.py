@@ -737,9 +737,14 @@ class CollinearCracks:
     """(1/pi) PV int_L psi(t)/(t - x) dt = 1 on L = [-c, -b] U [b, c], psi ~ dist^(-1/2) at
     all four tips, int psi = 0 over each crack (a = 0, b_coef = 1, f = 1).
 
-    Exact solution (Westergaard 1939; the collinear-cracks entry of Tada, Paris & Irwin,
-    The Stress Analysis of Cracks Handbook, 3rd ed. 2000, Part II; Sneddon & Lowengrub
-    1969, ch. 2): with X(z) = sqrt((z^2 - b^2)(z^2 - c^2)) ~ z^2 at infinity,
+    Exact solution (Westergaard's stress function for a row of collinear cracks, Westergaard
+    1939; the two-collinear-cracks entry of Tada, Paris & Irwin, The Stress Analysis of Cracks
+    Handbook, 3rd ed. 2000, Part II, and Erdogan 1962 give the same SIFs -- the page was not
+    at hand here, so everything below is derived and then checked numerically in
+    tests/test_sie_intervals.py::test_reference_collinear_cracks*: the equation by brute-force
+    PV, the zero net integrals, the SIFs as lim sqrt(2 pi r) sigma_yy from quadrature of the
+    density, and the isolated-crack / single-crack limits): with
+    X(z) = sqrt((z^2 - b^2)(z^2 - c^2)) ~ z^2 at infinity,
 
         C(z) := (1/pi) int_L psi/(t - z) dt = 1 - (z^2 - lambda^2)/X(z),
         lambda^2 = c^2 E(k)/K(k),  k^2 = 1 - b^2/c^2,

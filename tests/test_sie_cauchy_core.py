@@ -7,19 +7,27 @@ import pytest
 
 import sie
 
-mp.mp.dps = 60   # tanh-sinh stops ~10^-dps from an end: a -0.7 end would miss (1e-30)^0.3 of its mass
+# references at 60 digits (mp.workdps, not the global mp.dps that other test modules set):
+# tanh-sinh stops ~10^-dps from an end, and a -0.7 end would miss (1e-30)^0.3 of its mass at 30
+DPS = 60
 
 
+@mp.workdps(DPS)
 def _quad_transform(alpha, beta, c, z):
     """(1/pi) int (1-t)^alpha (1+t)^beta sum c_k P_k(t) / (t - z) dt by mpmath (tanh-sinh)."""
+    z = mp.mpc(z)
+
     def g(t):
         p = sum(ck * mp.jacobi(k, alpha, beta, t) for k, ck in enumerate(c))
         return (1 - t) ** alpha * (1 + t) ** beta * p / (t - z)
     return complex(mp.quad(g, [-1, 0, 1]) / mp.pi)
 
 
+@mp.workdps(DPS)
 def _abs_scale(alpha, beta, c, z):
     """(1/pi) int |psi(t)| / |t - z| dt: the size of the terms the transform sums."""
+    z = mp.mpc(z)
+
     def g(t):
         p = sum(ck * mp.jacobi(k, alpha, beta, t) for k, ck in enumerate(c))
         return abs((1 - t) ** alpha * (1 + t) ** beta * p / (t - z))
@@ -33,8 +41,8 @@ C = [0.7, -0.3, 0.2, 0.05, -0.01]
 @pytest.mark.parametrize("z", [1.5 + 0.0j, 0.3 + 1.0j, 4.0 - 3.0j, 1.2 + 0.01j, -1.1 - 0.05j])
 def test_jacobi_cauchy_against_mpmath_quadrature(alpha, beta, z):
     got = sie.jacobi_cauchy(C, alpha, beta, np.array([z]))[0]
-    ref = _quad_transform(alpha, beta, C, mp.mpc(z))
-    assert abs(got - ref) <= 1e-13 * _abs_scale(alpha, beta, C, mp.mpc(z))
+    ref = _quad_transform(alpha, beta, C, z)
+    assert abs(got - ref) <= 1e-13 * _abs_scale(alpha, beta, C, z)
 
 
 def _sqrt_transform(z):
@@ -104,6 +112,7 @@ def test_complex_point_on_the_interval_is_rejected():
 
 
 @pytest.mark.parametrize("x", [-3.0, -1.0, -0.4, 0.6, 1.3])
+@mp.workdps(DPS)
 def test_log_potential_against_mpmath(x):
     sol = _solution()
     a = sol.alpha
