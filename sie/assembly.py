@@ -15,7 +15,6 @@ kappa_i = -1 removes the row m = 0, whose residual is the solvability condition 
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,7 +25,7 @@ from .jacobi import jacobi_vandermonde
 from .quadrature import WeightedRule
 
 __all__ = ["Assembled", "assemble_and_solve", "coupling_images", "kernel_images",
-           "probe_kernel", "N_MAX_DENSE"]
+           "operator_images", "probe_kernel", "N_MAX_DENSE"]
 
 _KERNEL_EXTRA = 16          # t-nodes beyond n for int k(s,t) psi(t) dt
 N_MAX_DENSE = 6000          # unknowns of a dense system (several intervals or a kernel)
@@ -108,6 +107,21 @@ class Assembled:
     at_checks: list | None
 
 
+def operator_images(x, ui, unknowns, b, kernel):
+    """The coupling (from the other intervals) and kernel terms at real points x of interval
+    ``ui``, one matrix (len(x), n_j) per unknown j: applied to c^j and summed, they give
+    (b/pi) int_{L minus L_i} psi/(t - x) dt + int_L k(x, t) psi(t) dt."""
+    out = []
+    for uj in unknowns:
+        img = np.zeros((x.size, uj.n))
+        if uj is not ui:
+            img += coupling_images(x, uj, b)
+        if kernel is not None:
+            img += kernel_images(x, uj, kernel)
+        out.append(img)
+    return out
+
+
 def _offdiagonal(unknowns, b, kernel, checks):
     """The projected coupling + kernel operator: blocks [i][j] of shape (m_eq_i, n_j), and
     the same operator at the local points ``checks`` of each interval (not projected), from
@@ -118,12 +132,7 @@ def _offdiagonal(unknowns, b, kernel, checks):
     for i, ui in enumerate(unknowns):
         u = ui.sample_points()
         x = ui.interval.real(np.concatenate([u, checks]))
-        for j, uj in enumerate(unknowns):
-            img = np.zeros((x.size, uj.n))
-            if i != j:
-                img += coupling_images(x, uj, b)
-            if kernel is not None:
-                img += kernel_images(x, uj, kernel)
+        for j, img in enumerate(operator_images(x, ui, unknowns, b, kernel)):
             blocks[i][j] = ui.project(img[:u.size])
             at_checks[i][j] = img[u.size:]
     return blocks, at_checks

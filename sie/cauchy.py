@@ -61,7 +61,6 @@ from scipy import special as sp
 
 from ._jit import jit
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_vandermonde
 from .special import jacobi_moment_shifted
 
 __all__ = ["Weight", "cauchy_basis", "cauchy_series", "log_potential_series", "jacobi_cauchy"]

@@ -92,7 +92,7 @@ def check_intervals(intervals):
     return tuple(out)
 
 
-def per_interval(name, value, J, *, scalar_types=None):
+def per_interval(name, value, J):
     """One value per interval: a scalar (or a string) is repeated J times; a sequence must
     have exactly J entries."""
     if isinstance(value, (str, bytes)) or value is None or np.ndim(value) == 0:

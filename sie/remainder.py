@@ -202,7 +202,6 @@ class InversionRemainder:
 
     def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
-        sol = self.sol
         gx = call_checked(self.f, "f", (x,), x.shape)
         if self.other is not None:
             gx = gx - self.other(x)

@@ -159,14 +159,6 @@ class Solution:
     consistency = property(lambda self: self._per("consistency"),
                            doc="Solvability residual(s) for index -1 (None elsewhere).")
 
-    @property
-    def _exp(self):
-        return self.pieces[0].exp
-
-    @property
-    def _remainder(self):
-        return self.pieces[0].remainder
-
     # -- locating points ------------------------------------------------------
     def _real_points(self, s, name="s"):
         s = np.asarray(s)
@@ -206,32 +198,27 @@ class Solution:
         return " U ".join(f"[{c:g}, {d:g}]" for c, d in self.intervals)
 
     # -- psi and phi ------------------------------------------------------------
+    def _on_pieces(self, s, local_fn, what):
+        """``local_fn(piece, u)`` at each s of a closed interval (u its local coordinate)."""
+        s = self._real_points(s)
+        idx = self._piece_of(s)
+        if np.any(idx < 0):
+            raise EvaluationPointError(f"{what} is defined on {self._where()}; got points outside")
+        out = np.empty(s.shape)
+        for j, p in enumerate(self.pieces):
+            sel = idx == j
+            if np.any(sel):
+                out[sel] = local_fn(p, p.interval.local(s[sel]))
+        return out
+
     def phi(self, s):
         """phi_j(u) = psi/w_j at s in the closed interval j, u = (s - m_j)/h_j (a polynomial of
         degree n_j - 1, plus the pointwise remainder correction when ``breaks`` were given)."""
-        s = self._real_points(s)
-        idx = self._piece_of(s)
-        if np.any(idx < 0):
-            raise EvaluationPointError(f"phi is defined on {self._where()}; got points outside")
-        out = np.empty(s.shape)
-        for j, p in enumerate(self.pieces):
-            sel = idx == j
-            if np.any(sel):
-                out[sel] = p.phi_local(p.interval.local(s[sel]))
-        return out
+        return self._on_pieces(s, IntervalSolution.phi_local, "phi")
 
     def weight(self, s):
         """w_j(u) = (1-u)^alpha_j (1+u)^beta_j at s in the closed interval j."""
-        s = self._real_points(s)
-        idx = self._piece_of(s)
-        if np.any(idx < 0):
-            raise EvaluationPointError(f"the weight is defined on {self._where()}; got points outside")
-        out = np.empty(s.shape)
-        for j, p in enumerate(self.pieces):
-            sel = idx == j
-            if np.any(sel):
-                out[sel] = p.weight_local(p.interval.local(s[sel]))
-        return out
+        return self._on_pieces(s, IntervalSolution.weight_local, "the weight")
 
     def __call__(self, s):
         """psi(s); zero outside L; a singular end itself raises."""

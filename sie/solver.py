@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .assembly import assemble_and_solve, coupling_images, kernel_images, probe_kernel
+from .assembly import assemble_and_solve, operator_images, probe_kernel
 from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidCoefficientError,
                      InvalidEndConditionError, InvalidOrderError, ResidualWarning,
                      SideConditionError, call_checked, check_finite_real, check_order)
@@ -257,18 +257,11 @@ def _remainder_factory(piece, u, fs, g_hat, pieces, unknowns, f, a, b, kernel):
     def f_local(x):
         return f(iv.real(x))
 
-    other = None
-    if len(unknowns) > 1 or kernel is not None:
-        def other(x):
-            xr = iv.real(x)
-            out = np.zeros(np.shape(x))
-            for uj, pj in zip(unknowns, pieces):
-                if uj is not u:
-                    out += coupling_images(xr, uj, b) @ pj.coefficients
-                if kernel is not None:
-                    out += kernel_images(xr, uj, kernel) @ pj.coefficients
-            return out
+    def coupling_and_kernel(x):
+        imgs = operator_images(iv.real(x), u, unknowns, b, kernel)
+        return sum(img @ pj.coefficients for img, pj in zip(imgs, pieces))
 
+    other = None if len(unknowns) == 1 and kernel is None else coupling_and_kernel
     return lambda: InversionRemainder.build(piece, a, b, f_local, other, u.breaks, u.s, u.ws,
                                             fs, g_hat)
 

@@ -110,10 +110,9 @@ class IntervalUnknown:
         """Local points where the projection needs values: the nodes, and the split-off end."""
         return np.concatenate([self.s, [float(self.end)]]) if self.end else self.s
 
-    def sample(self, fn, name, interval_real=True):
+    def sample(self, fn, name):
         """``fn`` at the sample points (real coordinates), checked."""
-        u = self.sample_points()
-        x = self.interval.real(u) if interval_real else u
+        x = self.interval.real(self.sample_points())
         return call_checked(fn, name, (x,), x.shape)
 
     def project(self, values, count=None):
