@@ -67,6 +67,14 @@ __all__ = ["Weight", "cauchy_basis", "cauchy_series", "log_potential_series", "j
 
 
 
+def _sinpi(x: float) -> float:
+    """sin(pi x) to full relative precision near an integer: x - round(x) is exact
+    (Sterbenz), while pi * x rounds with an absolute error that sin(pi x) ~ pi (x - r)
+    would feel relatively."""
+    r = round(x)
+    return (-1.0) ** (r % 2) * math.sin(math.pi * (x - r))
+
+
 @dataclass(frozen=True)
 class Weight:
     """w(t) = (1-t)^alpha (1+t)^beta with alpha + beta = m in {-1, 0, 1}.
@@ -103,7 +111,7 @@ class Weight:
             raise ValueError(f"the Cauchy transform in closed form needs alpha + beta in "
                              f"{{-1, 0, 1}}, got alpha + beta = {m!r}")
         return cls(float(alpha), float(beta), 1.0 + alpha, 1.0 + beta, 1.0 - alpha,
-                   math.sin(math.pi * alpha))
+                   _sinpi(float(alpha)))
 
     def reflected(self) -> "Weight":
         """The weight of u -> -u: (1+t)^alpha (1-t)^beta."""
