@@ -33,9 +33,9 @@ N_MAX_DENSE = 6000          # unknowns of a dense system (several intervals or a
 
 def coupling_images(x, uj, b):
     """b (1/pi) int_{L_j} w_j P_k / (t - x) dt at real x off L_j: matrix (len(x), n_j)."""
-    x = np.asarray(x, dtype=float)
-    iv = uj.interval
-    return b * cauchy_basis(uj.n, uj.weight, iv.local(x), ends=iv.local_ends(x)).real
+    ends = uj.interval.local_ends(np.asarray(x, dtype=float))
+    v = 0.5 * (ends[0] + ends[1])             # the local coordinate (x - m)/h
+    return b * cauchy_basis(uj.n, uj.weight, v, ends=ends).real
 
 
 def kernel_images(x, uj, kernel):
@@ -113,9 +113,7 @@ def operator_images(x, ui, unknowns, b, kernel):
     (b/pi) int_{L minus L_i} psi/(t - x) dt + int_L k(x, t) psi(t) dt."""
     out = []
     for uj in unknowns:
-        img = np.zeros((x.size, uj.n))
-        if uj is not ui:
-            img += coupling_images(x, uj, b)
+        img = coupling_images(x, uj, b) if uj is not ui else np.zeros((x.size, uj.n))
         if kernel is not None:
             img += kernel_images(x, uj, kernel)
         out.append(img)
@@ -123,18 +121,16 @@ def operator_images(x, ui, unknowns, b, kernel):
 
 
 def _offdiagonal(unknowns, b, kernel, checks):
-    """The projected coupling + kernel operator: blocks [i][j] of shape (m_eq_i, n_j), and
-    the same operator at the local points ``checks`` of each interval (not projected), from
-    one evaluation per block."""
-    J = len(unknowns)
-    blocks = [[None] * J for _ in range(J)]
-    at_checks = [[None] * J for _ in range(J)]
-    for i, ui in enumerate(unknowns):
+    """The projected coupling + kernel operator seen from each interval i: a row block of
+    shape (m_eq_i, N) over all N unknowns, and the same operator (not projected) at the local
+    points ``checks`` of interval i, shape (len(checks), N); one evaluation per interval."""
+    blocks, at_checks = [], []
+    for ui in unknowns:
         u = ui.sample_points()
         x = ui.interval.real(np.concatenate([u, checks]))
-        for j, img in enumerate(operator_images(x, ui, unknowns, b, kernel)):
-            blocks[i][j] = ui.project(img[:u.size])
-            at_checks[i][j] = img[u.size:]
+        img = np.hstack(operator_images(x, ui, unknowns, b, kernel))
+        blocks.append(ui.project(img[:u.size]))
+        at_checks.append(img[u.size:])
     return blocks, at_checks
 
 
@@ -153,30 +149,37 @@ def assemble_and_solve(unknowns, fhat, b, kernel, checks):
             f"intervals or a kernel); at most {N_MAX_DENSE} are allowed (memory 8 N^2 bytes, "
             "time ~N^3)")
     blocks, at_checks = _offdiagonal(unknowns, b, kernel, checks)
-    cols = np.concatenate([[0], np.cumsum([u.n for u in unknowns])])
-    rows, rhs = [], []
-    for i, ui in enumerate(unknowns):
-        Bi = np.hstack(blocks[i])                        # (m_eq_i, size)
-        Ai = Bi.copy()
-        m = np.arange(max(0, -ui.kappa), min(ui.m_eq, ui.n - ui.kappa))   # 0 <= m + kappa < n
-        Ai[m, cols[i] + m + ui.kappa] += ui.lam
-        ri = fhat[i].copy()
+    A = np.empty((size, size))
+    rhs = np.empty(size)
+    flat = A.reshape(-1)
+    r0 = col = 0
+    for ui, blk, fh in zip(unknowns, blocks, fhat):
+        # rows of interval i: the side condition (kappa = 1), then the projected equations
+        # m = drop .. m_eq - 1 (kappa = -1 drops m = 0: the solvability condition)
+        drop = 1 if ui.kappa == -1 else 0
         if ui.kappa == 1:
-            side = np.zeros(size)
-            side[cols[i]] = abs(ui.lam)
-            Ai = np.vstack([side, Ai])
-            ri = np.concatenate([[abs(ui.lam) * ui.total / (ui.interval.h * ui.mu0)], ri])
-        elif ui.kappa == -1:
-            Ai, ri = Ai[1:], ri[1:]
-        rows.append(Ai)
-        rhs.append(ri)
-    A = np.vstack(rows)
-    c_all = np.linalg.solve(A, np.concatenate(rhs))
+            A[r0] = 0.0
+            A[r0, col] = abs(ui.lam)
+            rhs[r0] = abs(ui.lam) * ui.total / (ui.interval.h * ui.mu0)
+            r0 += 1
+        rows = ui.m_eq - drop
+        A[r0:r0 + rows] = blk[drop:]
+        rhs[r0:r0 + rows] = fh[drop:]
+        # lambda at (m, m + kappa) for 0 <= m + kappa < n: a diagonal of the row block
+        m0 = max(drop, -ui.kappa)
+        count = min(ui.m_eq, ui.n - ui.kappa) - m0
+        start = (r0 + m0 - drop) * size + col + m0 + ui.kappa
+        flat[start:start + count * (size + 1):size + 1] += ui.lam
+        r0 += rows
+        col += ui.n
+    c_all = np.linalg.solve(A, rhs)
     coeffs, cons, g_hat, checked = [], [], [], []
-    for i, ui in enumerate(unknowns):
-        coeffs.append(c_all[cols[i]:cols[i + 1]])
-        g = fhat[i] - np.hstack(blocks[i]) @ c_all
+    col = 0
+    for ui, blk, chk, fh in zip(unknowns, blocks, at_checks, fhat):
+        coeffs.append(c_all[col:col + ui.n])
+        col += ui.n
+        g = fh - blk @ c_all
         g_hat.append(g)
         cons.append(float(g[0]) if ui.kappa == -1 else None)
-        checked.append(np.hstack(at_checks[i]) @ c_all)
+        checked.append(chk @ c_all)
     return Assembled(coeffs, cons, g_hat, A, checked)

@@ -16,14 +16,18 @@ Method (per point z):
   the recurrence of P_k (DLMF 18.9.1-2).  F_k is its *minimal* solution off the
   interval (|F_k| ~ |rho|^-k, |P_k| ~ |rho|^k, rho = z + sqrt(z^2 - 1) with |rho| > 1),
   so (Gautschi, SIAM Rev. 9 (1967) 24):
-* **near the interval** (|rho|^n <= 30 and |rho| <= 2) the recurrence
-  is run forward from F_0 in closed form: contamination by the dominant solution grows
-  like |rho|^{2k}, which stays below the rounding of the result there, and inside the
-  interval (|rho| = 1) both solutions oscillate and forward is stable;
+* **near the interval** (|rho| <= 2, and |rho|^k |c_k| <= 30 max|c| for a series
+  sum c_k F_k, |rho|^n <= 30 for the basis itself) the recurrence is run forward from F_0 in
+  closed form: a rounding error in F_0 excites the dominant solution, which grows like
+  |rho|^k and stays below 30 eps of the result there; inside the interval (|rho| = 1) both
+  solutions oscillate and forward is stable;
 * **away from it** Miller's backward recurrence from y_K = 0, y_{K-1} = 1, with K chosen
   so that |rho|^{-2(K-n)} < 1e-17, gives F_k up to one factor; F_0 itself follows from
   F_1 = P_1 F_0 + A_0 mu_0 / pi as F_0 = A_0 mu_0 y_0 / (pi (y_1 - P_1(z) y_0)), which
   involves no closed form and no cancellation far away.
+
+The compiled kernels are in :mod:`sie.cauchy_kernels` (a series runs eight points at a time,
+lane-wise, so that their independent recurrences overlap).
 
 F_0 in closed form.  With G(z) = (z-1)^alpha (z+1)^beta (principal powers, cut on
 [-1, 1]) and its polynomial part at infinity 2^m P_m^{(-alpha,-beta)},
@@ -51,7 +55,6 @@ and x < -1 by the reflection u -> -u (alpha and beta swap).
 """
 from __future__ import annotations
 
-import cmath
 import functools
 import math
 from dataclasses import dataclass
@@ -59,7 +62,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special as sp
 
-from ._jit import jit
+from .cauchy_kernels import basis_kernel, f0_points, series_kernel
 from .gaussjacobi import gauss_jacobi_cached
 from .special import jacobi_moment_shifted
 
@@ -124,13 +127,6 @@ class Weight:
 # --------------------------------------------------------------------------
 # F_0 in closed form (near the interval)
 # --------------------------------------------------------------------------
-def _expm1c(w):
-    """expm1 of complex w without cancellation: expm1(x) cos y - 2 sin^2(y/2) + i e^x sin y."""
-    x, y = w.real, w.imag
-    s = np.sin(0.5 * y)
-    return (np.expm1(x) * np.cos(y) - 2.0 * s * s) + 1j * (np.exp(x) * np.sin(y))
-
-
 def _log_ratio(zm1, zp1):
     """L = log((z-1)/(z+1)), principal branch (cut on [-1, 1]); for real z = x in
     (-1, 1) the upper limit log((1-x)/(1+x)) + i pi.  From z - 1 and z + 1 as given (the
@@ -152,159 +148,69 @@ def _end_offsets(z, ends):
     return z - 1.0, z + 1.0
 
 
-def f0_closed(wt: Weight, z, ends=None):
-    """F_0(z) for complex z off [-1, 1] (or real x: the upper limit F_0(x + i0) inside).
-    ``ends``: (z - 1, z + 1) computed more accurately than from z (see :func:`_log_ratio`)."""
-    zm1, zp1 = _end_offsets(z, ends)
-    L = _log_ratio(zm1, zp1)
-    m, a = wt.m, wt.alpha
-    if m == -1:
-        num = np.exp(a * L) / zp1
-    elif m == 0:
-        num = _expm1c(a * L)
-    elif a <= 0.5:
-        num = zp1 * _expm1c(a * L) + 2.0 * a
-    else:
-        num = zm1 * _expm1c(-wt.alpha_m1 * L) - 2.0 * wt.alpha_m1
-    return num / wt.sin
-
-
-# --------------------------------------------------------------------------
-# the recurrence (one kernel: forward near, backward Miller far)
-# --------------------------------------------------------------------------
-@jit()
-def _cauchy_kernel(n, a, b, mu0, zr, zi, f0r, f0i, cand, c, V, out):
-    """F_k(z_i), k < n (see module docstring), into V[i, k] when V has rows, else
-    out[i] = sum_k c_k F_k(z_i).
-
-    Near the interval (|rho|^n <= _NEAR_GROWTH and |rho| <= 2; ``cand[i]`` marks the points
-    whose closed-form F_0 was supplied, a superset) the recurrence runs forward.  Elsewhere
-    Miller's backward recurrence y_{k-1} = ((A_k z + B_k) y_k - y_{k+1}) / C_k from
-    y_K = 0, y_{K-1} = 1, |rho|^{-2(K-n)} < 1e-17, rescaled against overflow, and normalised by
-    F_0 = A_0 mu_0 y_0 / (pi (y_1 - P_1(z) y_0)) (from F_1 = P_1 F_0 + A_0 mu_0 / pi)."""
-    m = zr.shape[0]
-    store = V.shape[0] > 0
-    ap1 = a + 1.0
-    abp2 = ap1 + (b + 1.0)
-    A0 = 0.5 * abp2
-    B0 = ap1 - A0
-    c0 = A0 * mu0 / math.pi
-    lim_near = math.log(30.0)
-    # first pass: the start of the backward recurrence per point (0: forward)
-    K = np.zeros(m, dtype=np.int64)
-    kmax = n
-    for i in range(m):
-        z = complex(zr[i], zi[i])
-        rho = abs(z + cmath.sqrt(z - 1.0) * cmath.sqrt(z + 1.0))
-        lr = math.log(max(rho, 1.0 / rho))
-        if cand[i] and n * lr <= lim_near and lr <= math.log(2.0):
-            K[i] = 0
-        else:
-            K[i] = n + int(math.ceil(39.2 / (2.0 * lr))) + 2
-            if K[i] > kmax:
-                kmax = K[i]
-    # recurrence coefficients P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1}, k >= 1 (DLMF 18.9.2)
-    Ak = np.zeros(kmax + 1)
-    Bk = np.zeros(kmax + 1)
-    Ck = np.zeros(kmax + 1)
-    iC = np.zeros(kmax + 1)
-    for k in range(1, kmax + 1):
-        s = 2.0 * (k - 1) + abp2
-        d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
-        Ak[k] = (s + 1.0) * (s + 2.0) * s / d
-        Bk[k] = (s + 1.0) * (a * a - b * b) / d
-        Ck[k] = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
-        iC[k] = 1.0 / Ck[k]
-    for i in range(m):
-        z = complex(zr[i], zi[i])
-        if K[i] == 0:
-            f_prev = complex(f0r[i], f0i[i])
-            acc = c[0] * f_prev if not store else 0j
-            if store:
-                V[i, 0] = f_prev
-            if n > 1:
-                f = (A0 * z + B0) * f_prev + c0
-                if store:
-                    V[i, 1] = f
-                else:
-                    acc += c[1] * f
-                for k in range(1, n - 1):
-                    f_next = (Ak[k] * z + Bk[k]) * f - Ck[k] * f_prev
-                    if store:
-                        V[i, k + 1] = f_next
-                    else:
-                        acc += c[k + 1] * f_next
-                    f_prev = f
-                    f = f_next
-            out[i] = acc
-        else:
-            y_next = 0j          # y_{k+1}
-            y = 1.0 + 0j         # y_k, k = K - 1
-            acc = 0j
-            for k in range(K[i] - 1, 0, -1):
-                if k < n:
-                    if store:
-                        V[i, k] = y
-                    else:
-                        acc += c[k] * y
-                y_prev = ((Ak[k] * z + Bk[k]) * y - y_next) * iC[k]
-                y_next = y
-                y = y_prev
-                if abs(y.real) + abs(y.imag) > 1e250:       # rescale: only ratios matter
-                    y *= 1e-250
-                    y_next *= 1e-250
-                    acc *= 1e-250
-                    if store:
-                        for j in range(k, n):
-                            V[i, j] *= 1e-250
-            # now y = y_0, y_next = y_1
-            if store:
-                V[i, 0] = y
-            else:
-                acc += c[0] * y
-            scale = c0 / (y_next - (A0 * z + B0) * y)     # F_0 / y_0
-            if store:
-                for k in range(n):
-                    V[i, k] *= scale
-            out[i] = acc * scale
-    return out
-
-
-_NEAR_BOX = (1.3, 0.8)    # |rho| <= 2 lies inside |Re z| < 1.25, |Im z| < 0.75
-
-
-def _near_f0(wt, z, shifted, ends):
-    """Candidates for the forward recurrence (a box around the interval) and F_0 there."""
-    zc = z.astype(complex)
-    cand = (np.abs(zc.real) < _NEAR_BOX[0]) & (np.abs(zc.imag) < _NEAR_BOX[1])
-    f0 = np.zeros(z.shape, dtype=complex)
-    if np.any(cand):
-        e = None if ends is None else (ends[0][cand], ends[1][cand])
-        f0[cand] = _f0_shifted(wt, z[cand], e) if shifted else f0_closed(wt, z[cand], e)
-    return zc, cand, f0
-
-
-def _kernel_args(wt, shifted):
-    if shifted:
-        return (float(wt.alpha_p1), float(wt.beta_p1),
-                float(jacobi_moment_shifted(wt.alpha_p1 + 1.0, wt.beta_p1 + 1.0)))
-    return float(wt.alpha), float(wt.beta), float(wt.mu0)
-
-
-def _f0_shifted(wt: Weight, z, ends=None):
-    """F~_0(z) = (1/pi) int (1-u)^{alpha+1} (1+u)^{beta+1} / (u - z) du near the interval:
-    1 - u^2 = (1 - z^2) - (u - z)(u + z) gives F~_0 = (1 - z^2) F_0 - (M_1 + z mu_0)/pi,
-    M_1 = int w u = mu_0 (beta - alpha)/(alpha + beta + 2); finite at the ends
-    ((1 - z^2) F_0 -> 0 there since alpha, beta > -1)."""
-    zc = z.astype(complex)
-    zm1, zp1 = _end_offsets(z, ends)
-    at_end = (zm1 == 0.0) | (zp1 == 0.0)
-    f0 = np.zeros(z.shape, dtype=complex)
-    if np.any(~at_end):
-        f0[~at_end] = f0_closed(wt, z[~at_end], (zm1[~at_end], zp1[~at_end]))
+def f0_parameters(wt: Weight, shifted=False):
+    """Parameters of the closed form of F_0 for the compiled kernels
+    (:func:`sie.cauchy_kernels._f0`): m, alpha, 1 - alpha, sin(pi alpha), shifted, and for
+    the shifted weight M_1 = int w u = mu_0 (beta - alpha)/(alpha + beta + 2) and mu_0."""
     mu0 = wt.mu0
     m1 = mu0 * (wt.beta_p1 - wt.alpha_p1) / (wt.alpha_p1 + wt.beta_p1)
-    return -(zm1 * zp1) * f0 - (m1 + zc * mu0) / math.pi
+    return np.array([float(wt.m), wt.alpha, wt.alpha_m1, wt.sin, float(shifted), m1, mu0])
+
+
+def _writeable(x, dtype=float):
+    """C-contiguous and writeable: one numba specialisation per kernel (a read-only array is
+    a different numba type and would compile again)."""
+    x = np.ascontiguousarray(x, dtype=dtype)
+    return x if x.flags.writeable else x.copy()
+
+
+def _kernel_points(z, ends):
+    """z, z - 1 and z + 1 as complex arrays for the kernels."""
+    zm1, zp1 = _end_offsets(z, ends)
+    return _writeable(z, complex), _writeable(zm1, complex), _writeable(zp1, complex)
+
+
+def f0_closed(wt: Weight, z, ends=None, shifted=False):
+    """F_0(z) for complex z off [-1, 1] (or real x: the upper limit F_0(x + i0) inside), in
+    closed form (module docstring).  ``ends``: (z - 1, z + 1) computed more accurately than
+    from z (see :func:`_log_ratio`).  ``shifted``: F~_0 of the weight with both exponents
+    raised by one, (1 - z^2) F_0 - (M_1 + z mu_0)/pi, finite at the ends."""
+    z = np.asarray(z)
+    zc, zm1, zp1 = _kernel_points(z.ravel(), None if ends is None else
+                                  (np.ravel(ends[0]), np.ravel(ends[1])))
+    out = f0_points(zc, zm1, zp1, f0_parameters(wt, shifted), np.empty(zc.size, dtype=complex))
+    return out.reshape(z.shape)
+
+
+def _kernel_args(wt, shifted, lr_max):
+    if shifted:
+        return (float(wt.alpha_p1), float(wt.beta_p1),
+                float(jacobi_moment_shifted(wt.alpha_p1 + 1.0, wt.beta_p1 + 1.0)), lr_max)
+    return float(wt.alpha), float(wt.beta), float(wt.mu0), lr_max
+
+
+_FORWARD_GROWTH = 30.0     # the most the forward recurrence may amplify rounding
+
+
+def _forward_limit(n, c=None):
+    """The largest log|rho| where the forward recurrence is used (capped at log 2).
+
+    Forward from F_0, a rounding error eps |F_0| excites the dominant solution, ~|rho|^k in
+    F_k.  For the basis (``c`` None) every F_k, k < n, must keep it below 30 eps |F_0|:
+    |rho|^n <= 30.  For a series sum_k c_k F_k only the sum must:
+    |c_k| |rho|^k <= 30 max|c| for every k, which for a resolved series (|c_k| decaying
+    geometrically at the rate of phi's Bernstein ellipse) allows the whole box around the
+    interval, where Miller's recurrence would need ~20/log|rho| extra steps per point."""
+    cap = math.log(2.0)
+    if c is None:
+        return min(cap, math.log(_FORWARD_GROWTH) / max(n, 1))
+    mag = np.abs(c[1:])
+    top = max(float(np.abs(c).max()), np.finfo(float).tiny)
+    k = np.flatnonzero(mag > 0.0)
+    if k.size == 0:
+        return cap
+    lim = (math.log(_FORWARD_GROWTH) - np.log(mag[k] / top)) / (k + 1.0)
+    return min(cap, float(lim.min()))
 
 
 def cauchy_basis(n, wt: Weight, z, shifted=False, ends=None):
@@ -315,26 +221,24 @@ def cauchy_basis(n, wt: Weight, z, shifted=False, ends=None):
     polynomials P_k^{(alpha+1,beta+1)} (finite at the ends too).  ``ends``: z - 1 and z + 1
     when the caller has them more accurately than z itself."""
     z = np.asarray(z)
-    zc, cand, f0 = _near_f0(wt, z, shifted, ends)
     V = np.empty((z.size, n), dtype=complex)
     if z.size and n:
-        _cauchy_kernel(int(n), *_kernel_args(wt, shifted), zc.real.copy(), zc.imag.copy(),
-                       f0.real.copy(), f0.imag.copy(), cand, np.zeros(1), V,
-                       np.empty(z.size, dtype=complex))
+        basis_kernel(int(n), *_kernel_args(wt, shifted, _forward_limit(n)),
+                     *_kernel_points(z, ends), f0_parameters(wt, shifted), V)
     return V
 
 
 def cauchy_series(c, wt: Weight, z, shifted=False, ends=None):
     """sum_k c_k F_k(z) for a 1-d array z (memory O(1) per point)."""
-    c = np.ascontiguousarray(c, dtype=float)
+    c = _writeable(c)
     z = np.asarray(z)
     out = np.zeros(z.shape, dtype=complex)
     if c.size == 0 or z.size == 0:
         return out
-    zc, cand, f0 = _near_f0(wt, z, shifted, ends)
-    return _cauchy_kernel(int(c.size), *_kernel_args(wt, shifted), zc.real.copy(),
-                          zc.imag.copy(), f0.real.copy(), f0.imag.copy(), cand, c,
-                          np.empty((0, c.size), dtype=complex), out)
+    nz = np.flatnonzero(c)
+    c = c[:nz[-1] + 1] if nz.size else c[:1]     # trailing zeros (a chopped series) cost nothing
+    return series_kernel(*_kernel_args(wt, shifted, _forward_limit(c.size, c)),
+                         *_kernel_points(z, ends), f0_parameters(wt, shifted), c, out)
 
 
 def jacobi_cauchy(c, alpha, beta, z):

@@ -95,7 +95,7 @@ def check_intervals(intervals):
 def per_interval(name, value, J):
     """One value per interval: a scalar (or a string) is repeated J times; a sequence must
     have exactly J entries."""
-    if isinstance(value, (str, bytes)) or value is None or np.ndim(value) == 0:
+    if isinstance(value, (str, bytes, int, float)) or value is None or np.ndim(value) == 0:
         return [value] * J
     vals = list(value)
     if len(vals) != J:

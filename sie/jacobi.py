@@ -13,7 +13,8 @@ import numpy as np
 from ._jit import jit
 from .special import jacobi_norm
 
-__all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms"]
+__all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms",
+           "jacobi_norms_cached", "plateau_start"]
 
 
 @jit()
@@ -48,6 +49,26 @@ def _vandermonde(n, a, b, x):
             for i in range(m):
                 V[i, k + 1] = (A * x[i] + B) * V[i, k] - C * V[i, k - 1]
     return V
+
+
+@jit()
+def plateau_start(c, scale, factor, run):
+    """First k such that |c_j| scale_j <= factor * max_i |c_i| scale_i for j = k .. k+run-1,
+    or len(c) when there is no such run (the start of a series' rounding-noise plateau)."""
+    n = c.shape[0]
+    top = 0.0
+    for k in range(n):
+        top = max(top, abs(c[k]) * scale[k])
+    tol = factor * top
+    count = 0
+    for k in range(n):
+        if abs(c[k]) * scale[k] <= tol:
+            count += 1
+            if count == run:
+                return k - run + 1
+        else:
+            count = 0
+    return n
 
 
 _BLOCK = 1 << 16  # entries of one Vandermonde block (512 KiB): memory stays O(n) per point
@@ -110,11 +131,12 @@ def jacobi_project(v, a, b, x, n):
 
 def jacobi_norms(n, a, b):
     """h_k = int (1-x)^a (1+x)^b P_k^{(a,b)}(x)^2 dx, k = 0..n-1 (a fresh array)."""
-    return _jacobi_norms_cached(int(n), float(a), float(b)).copy()
+    return jacobi_norms_cached(int(n), float(a), float(b)).copy()
 
 
 @functools.lru_cache(maxsize=512)
-def _jacobi_norms_cached(n, a, b):
+def jacobi_norms_cached(n, a, b):
+    """:func:`jacobi_norms`, memoised and read-only."""
     # memoised: the contact layer re-solves equations of the same exponents many times
     h = _norm_ratios(n, a, b, jacobi_norm(1, a, b) if n > 1 else 0.0)
     h[0] = jacobi_norm(0, a, b)

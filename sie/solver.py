@@ -23,6 +23,7 @@ truncation remainder (:mod:`sie.remainder`).
 """
 from __future__ import annotations
 
+import functools
 import warnings
 from dataclasses import dataclass
 
@@ -34,7 +35,7 @@ from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidCo
                      SideConditionError, call_checked, check_finite_real, check_order)
 from .exponents import END_CHOICES, Exponents, sie_exponents
 from .intervals import Interval, check_intervals, per_interval, split_breaks
-from .jacobi import jacobi_norms, jacobi_series
+from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
 from .unknowns import IntervalUnknown
 
@@ -45,6 +46,7 @@ N_MAX = 20_000          # basis size per interval: the projection is dense, O(n^
 CONSISTENCY_TOL = 1e-8  # |consistency| above this times max|f| warns (index -1)
 RESIDUAL_TOL = 1e-6     # equation residual above this times its scale warns
 _CHECK_POINTS = np.cos(np.pi * (np.arange(7) + 0.5) / 7) * 0.999
+_NO_POINTS = np.empty(0)
 
 
 # --------------------------------------------------------------------------
@@ -107,24 +109,32 @@ def _check_totals(total, exps, multi):
 # --------------------------------------------------------------------------
 # residual checks
 # --------------------------------------------------------------------------
-def _dominant_image(piece, u):
-    """lambda sum_k c_k P_{k-kappa}^{(-alpha,-beta)}(u) (without the kappa = -1 constant)."""
+def _dominant_image(piece):
+    """sum_k c_k P_{k-kappa}^{(-alpha,-beta)} at the check points (the dominant operator
+    without lambda and without the kappa = -1 constant)."""
     c, k = piece.coefficients, piece.kappa
     shifted = c[1:] if k == 1 else (c if k == 0 else np.concatenate([[0.0], c]))
-    return jacobi_series(shifted, -piece.alpha, -piece.beta, u)
+    return _check_basis(shifted.size, -piece.alpha, -piece.beta) @ shifted
 
 
-def _check_residual(f, unknowns, pieces, at_checks, fscale):
+@functools.lru_cache(maxsize=64)
+def _check_basis(n, a, b):
+    """P_k^{(a,b)} at the residual check points, k < n (read-only)."""
+    out = jacobi_vandermonde(n, a, b, _CHECK_POINTS)
+    out.flags.writeable = False
+    return out
+
+
+def _check_residual(f_checks, unknowns, pieces, at_checks, fscale):
     """Warn when the equation, at points between the collocation nodes, is not satisfied to
     RESIDUAL_TOL of its scale: catches an unresolved f or kernel and kernels outside the
     method's class.  Only where the collocation is not exact by construction (a kernel or
     several intervals; alone, the dominant operator maps the basis exactly); costs f at 7
-    points per interval, the rest comes with the assembly."""
+    points per interval (``f_checks``, sampled with the nodes), the rest comes with the
+    assembly."""
     worst, where = 0.0, None
-    for i, (ui, pi, other) in enumerate(zip(unknowns, pieces, at_checks)):
-        x = ui.interval.real(_CHECK_POINTS)
-        lhs = ui.lam * _dominant_image(pi, _CHECK_POINTS) + other
-        fx = call_checked(f, "f", (x,), x.shape)
+    for i, (ui, pi, other, fx) in enumerate(zip(unknowns, pieces, at_checks, f_checks)):
+        lhs = ui.lam * _dominant_image(pi) + other
         if pi.consistency is not None:
             fx = fx - pi.consistency
         scale = max(fscale, float(np.max(np.abs(lhs))), np.finfo(float).tiny)
@@ -210,8 +220,10 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
                 for iv, e, nj, br, t in zip(ivs, exps, ns, brs, totals)]
     if kernel is not None:
         probe_kernel(kernel, unknowns)
-    # 2. right-hand side
-    fvals = [u.sample(f, "f") for u in unknowns]
+    # 2. right-hand side (and f at the residual check points, where there is a check)
+    checked = (J > 1 or kernel is not None) and not any(br.size for br in brs)
+    extra = _CHECK_POINTS if checked else _NO_POINTS
+    fvals, f_checks = zip(*(u.sample(f, "f", extra) for u in unknowns))
     fhat = [u.project(v) for u, v in zip(unknowns, fvals)]
     # 3. assembly and solve
     sys_ = assemble_and_solve(unknowns, fhat, b, kernel, _CHECK_POINTS)
@@ -221,7 +233,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         c = _chop_noise(c, u.exp)
         c.flags.writeable = False
         pieces.append(IntervalSolution(u.interval, u.exp, u.n, c, cons))
-    fscale = max(float(np.max(np.abs(v))) for v in fvals)
+    needs_scale = checked or any(p.consistency is not None for p in pieces)
+    fscale = max(float(np.abs(v).max(initial=0.0)) for v in fvals) if needs_scale else 0.0
     for j, p in enumerate(pieces):
         if p.consistency is not None and abs(p.consistency) > CONSISTENCY_TOL * max(fscale, 1e-300):
             on = f" on interval {j}" if multi else ""
@@ -232,8 +245,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
                 "taken out of f", InconsistentEquationWarning, stacklevel=2)
     if any(br.size for br in brs):
         pieces = _with_remainders(pieces, unknowns, fvals, sys_, f, a, b, kernel)
-    elif sys_.at_checks is not None:
-        _check_residual(f, unknowns, pieces, sys_.at_checks, fscale)
+    elif checked:
+        _check_residual(f_checks, unknowns, pieces, sys_.at_checks, fscale)
     return Solution(tuple(pieces), a, b, multi, sys_.matrix)
 
 
@@ -283,16 +296,14 @@ def _chop_noise(c, e, factor=256.0, run=8):
     c = np.array(c, dtype=float)
     if c.size <= run:
         return c
-    size = np.abs(c) * np.sqrt(jacobi_norms(c.size, max(e.alpha, -0.5), max(e.beta, -0.5)))
-    top = size.max()
-    if top == 0.0:
-        return c
-    small = size <= factor * np.finfo(float).eps * top
-    window = np.convolve(small.astype(int), np.ones(run, dtype=int), mode="valid")
-    hits = np.flatnonzero(window == run)
-    if hits.size:
-        c[hits[0]:] = 0.0
+    scale = _sqrt_norms(c.size, max(e.alpha, -0.5), max(e.beta, -0.5))
+    c[plateau_start(c, scale, factor * np.finfo(float).eps, run):] = 0.0
     return c
+
+
+@functools.lru_cache(maxsize=256)
+def _sqrt_norms(n, a, b):
+    return np.sqrt(jacobi_norms_cached(n, a, b))
 
 
 # --------------------------------------------------------------------------

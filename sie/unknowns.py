@@ -29,6 +29,7 @@ from .special import jacobi_moment_shifted
 __all__ = ["IntervalUnknown", "dominant_lambda"]
 
 _EXTRA_PER_PIECE = 24       # extra nodes per piece of the composite rule (breaks)
+_PROJECTOR_CACHE_MAX = 1 << 16   # entries of a projection matrix kept between solves (512 KiB)
 
 
 def dominant_lambda(e: Exponents, b: float) -> float:
@@ -76,10 +77,9 @@ class IntervalUnknown:
         """``count``: how many projections are needed (default n - kappa, all equations)."""
         m_eq = n - e.kappa
         count = m_eq if count is None else count
-        norms = jacobi_norms(count, -e.alpha, -e.beta)
-        norms[0] = jacobi_moment_shifted(e.alpha_m1, e.beta_m1)
+        norms = _projection_norms(count, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
         if breaks.size == 0:
-            rule = WeightedRule.build(m_eq, -e.alpha, -e.beta, e.alpha_m1, e.beta_m1)
+            rule = _projection_rule(m_eq, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
             s, ws = rule.x, rule.omega
         else:
             rule = None
@@ -110,10 +110,15 @@ class IntervalUnknown:
         """Local points where the projection needs values: the nodes, and the split-off end."""
         return np.concatenate([self.s, [float(self.end)]]) if self.end else self.s
 
-    def sample(self, fn, name):
-        """``fn`` at the sample points (real coordinates), checked."""
-        x = self.interval.real(self.sample_points())
-        return call_checked(fn, name, (x,), x.shape)
+    def sample(self, fn, name, extra=None):
+        """``fn`` at the sample points (real coordinates), checked; with ``extra`` (local
+        points) also there, in the same call: (at the sample points, at ``extra``)."""
+        u = self.sample_points()
+        if extra is None:
+            return call_checked(fn, name, (self.interval.real(u),), u.shape)
+        x = self.interval.real(np.concatenate([u, extra]))
+        v = call_checked(fn, name, (x,), x.shape)
+        return v[:u.size], v[u.size:]
 
     def project(self, values, count=None):
         """<g, P_m^{(-alpha,-beta)}> / h_m, m < count, from g at :meth:`sample_points`
@@ -121,7 +126,8 @@ class IntervalUnknown:
         count = self.norms.size if count is None else count
         v = np.asarray(values)
         q = self.s.size
-        if v.ndim == 1:
+        if v.ndim == 1 and count * q > _PROJECTOR_CACHE_MAX:
+            # large n: blocked sums, no count-by-q matrix
             if self.rule is not None:
                 out = self.rule.project(v[:q], v[q] if self.end else 0.0, count)
             else:
@@ -129,13 +135,17 @@ class IntervalUnknown:
             return out / self.norms[:count]
         out = self._projector[:count] @ v[:q]
         if self.end:
-            out += np.outer(self.rule.corr * self.rule.end_values(count), v[q])
-        return out / self.norms[:count, None]
+            ev = self.rule.corr * self.rule.end_values(count)
+            out = out + (ev * v[q] if v.ndim == 1 else np.outer(ev, v[q]))
+        return out / (self.norms[:count] if v.ndim == 1 else self.norms[:count, None])
 
     @functools.cached_property
     def _projector(self):
         """(P_m(s_j) ws_j), m < n - kappa: the projection of sampled columns."""
-        return jacobi_vandermonde(self.norms.size, -self.exp.alpha, -self.exp.beta, self.s).T * self.ws
+        e = self.exp
+        if self.rule is not None and self.norms.size * self.s.size <= _PROJECTOR_CACHE_MAX:
+            return _projector(self.norms.size, self.s.size, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
+        return jacobi_vandermonde(self.norms.size, -e.alpha, -e.beta, self.s).T * self.ws
 
     def dominant_rhs_solve(self, fhat, total):
         """Coefficients from the diagonal system alone (no coupling, no kernel):
@@ -150,3 +160,29 @@ class IntervalUnknown:
         else:
             c[:] = fhat[1:] / self.lam
         return c
+
+
+# Memoised per exponents and size: the contact layer and load continuations solve equations
+# with the same exponents many times (the arrays are read-only).
+@functools.lru_cache(maxsize=256)
+def _projection_norms(count, alpha, beta, alpha_m1, beta_m1):
+    """h_m of P_m^{(-alpha,-beta)}, m < count, h_0 from the exact 1 - alpha, 1 - beta."""
+    norms = jacobi_norms(count, -alpha, -beta)
+    if count:
+        norms[0] = jacobi_moment_shifted(alpha_m1, beta_m1)
+    norms.flags.writeable = False
+    return norms
+
+
+@functools.lru_cache(maxsize=256)
+def _projection_rule(m_eq, alpha, beta, alpha_m1, beta_m1):
+    """The Gauss-Jacobi rule of (1-u)^{-alpha}(1+u)^{-beta} with m_eq nodes."""
+    return WeightedRule.build(m_eq, -alpha, -beta, alpha_m1, beta_m1)
+
+
+@functools.lru_cache(maxsize=64)
+def _projector(count, q, alpha, beta, alpha_m1, beta_m1):
+    rule = _projection_rule(q, alpha, beta, alpha_m1, beta_m1)
+    out = jacobi_vandermonde(count, -alpha, -beta, rule.x).T * rule.omega
+    out.flags.writeable = False
+    return out
