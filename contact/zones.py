@@ -1,0 +1,220 @@
+"""Contact on several zones: one integral equation on their union, its side conditions, and
+Newton's method for the ends.
+
+On L = [c_1, d_1] U ... U [c_J, d_J] the pressure solves (Zhou et al. 2014, eqs. (4.5)-(4.10),
+errata conventions: v the Y-displacement, q = mu_f p)
+
+    N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt = H'(X),    X in L,
+
+H the height of the punch face.  Each zone end is **free** (p bounded, -> 0; its position is
+unknown) or a **corner** (an edge of the face: p singular, the position fixed).  The unknowns
+are the free ends and, for a zone with two corners (index 1), the load it carries; the
+equations are
+
+* per zone with two free ends (index -1): the solvability condition of the equation on that
+  zone (``sie.Solution.consistency``: the weighted mean of the right-hand side left over),
+* per gap between neighbouring zones: both touch the same rigid face.  The gap
+  g = H - v - v_0 has g' = H' - N11 Hc[p] off L (q = 0 there), and with
+  V(X) = (1/pi) int_L p(t) log|X - t| dt (dV/dX = -Hc[p], ``sie.Solution.log_potential``)
+      g(c_{j+1}) - g(d_j) = H(c_{j+1}) - H(d_j) + N11 (V(c_{j+1}) - V(d_j)) = 0,
+* the total load: int_L p = P.
+
+Zone by zone the counts agree (two free ends: two unknowns and one equation; one corner: one
+unknown; two corners: the zone's load), and the J - 1 gap conditions with the total load give
+the remaining J equations.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+import sie
+
+from .errors import ContactLossError
+
+__all__ = ["Zone", "ZoneEquations", "FREE", "CORNER"]
+
+FREE, CORNER = "free", "corner"
+_SIE_END = {FREE: "bounded", CORNER: "singular"}
+
+
+@dataclass(frozen=True)
+class Zone:
+    """One contact zone [c, d] and the kind of each end ("free" or "corner")."""
+    c: float
+    d: float
+    left: str = FREE
+    right: str = FREE
+
+    @property
+    def kappa(self) -> int:
+        return {(CORNER, CORNER): 1, (FREE, FREE): -1}.get((self.left, self.right), 0)
+
+    @property
+    def width(self) -> float:
+        return self.d - self.c
+
+
+@dataclass(frozen=True)
+class ZoneEquations:
+    """The equations of a set of zones for one face, material, friction and load.
+
+    ``slope``: H'(X), vectorised; ``rise(x0, x1)``: H(x1) - H(x0); ``breaks``: X where H' or a
+    derivative jumps; ``a`` = N12 mu_f, ``b`` = N11; ``n``: Jacobi coefficients per zone."""
+    slope: object
+    rise: object
+    breaks: tuple
+    a: float
+    b: float
+    load: float
+    n: int = 32
+
+    # -- the integral equation on the zones ---------------------------------------------
+    def solve(self, zones, totals=None) -> sie.Solution:
+        """p on the zones (``totals``: the load of each index-1 zone, None elsewhere)."""
+        totals = totals if totals is not None else [None] * len(zones)
+        br = [x for x in self.breaks if any(z.c < x < z.d for z in zones)]
+        with warnings.catch_warnings():
+            # a trial set of ends violates the solvability condition until Newton converges
+            warnings.simplefilter("ignore", sie.InconsistentEquationWarning)
+            warnings.simplefilter("ignore", sie.ResidualWarning)
+            return sie.solve(self.slope, a=self.a, b=self.b, n=self.n,
+                             left=[_SIE_END[z.left] for z in zones],
+                             right=[_SIE_END[z.right] for z in zones],
+                             total=list(totals), breaks=br,
+                             intervals=[(z.c, z.d) for z in zones])
+
+    # -- unknowns <-> zones ----------------------------------------------------------------
+    @staticmethod
+    def pack(zones, totals):
+        """The unknown vector: each zone's free ends, then its load if both ends are corners."""
+        x = []
+        for z, t in zip(zones, totals):
+            if z.left == FREE:
+                x.append(z.c)
+            if z.right == FREE:
+                x.append(z.d)
+            if z.kappa == 1:
+                x.append(t)
+        return np.array(x, dtype=float)
+
+    @staticmethod
+    def unpack(x, zones):
+        out, totals, i = [], [], 0
+        for z in zones:
+            c, d = z.c, z.d
+            if z.left == FREE:
+                c, i = float(x[i]), i + 1
+            if z.right == FREE:
+                d, i = float(x[i]), i + 1
+            t = None
+            if z.kappa == 1:
+                t, i = float(x[i]), i + 1
+            out.append(replace(z, c=c, d=d))
+            totals.append(t)
+        return out, totals
+
+    # -- residuals ----------------------------------------------------------------------------
+    def residual(self, zones, totals):
+        """(F, solution): the scaled residuals of the side conditions (module docstring)."""
+        sol = self.solve(zones, totals)
+        scale = self._slope_scale(zones)
+        F = []
+        cons = sol.consistency
+        for z, cz in zip(zones, cons):
+            if z.kappa == -1:
+                F.append(cz / scale)
+        if len(zones) > 1:
+            ends = np.array([x for z0, z1 in zip(zones[:-1], zones[1:]) for x in (z0.d, z1.c)])
+            V = sol.log_potential(ends).reshape(-1, 2)
+            for k, (z0, z1) in enumerate(zip(zones[:-1], zones[1:])):
+                g = self.rise(z0.d, z1.c) + self.b * (V[k, 1] - V[k, 0])
+                F.append(g / (scale * max(z0.width, z1.width)))
+        F.append(sol.integral() / self.load - 1.0)
+        return np.array(F), sol
+
+    def _slope_scale(self, zones):
+        X = np.concatenate([z.c + z.width * np.linspace(0.0, 1.0, 9) for z in zones])
+        s = float(np.max(np.abs(self.slope(X))))
+        return s if s > 0.0 else abs(self.b) * self.load / max(z.width for z in zones)
+
+    # -- Newton ---------------------------------------------------------------------------------
+    def newton(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf):
+        """The ends (and index-1 loads) that satisfy the side conditions, from a start close
+        enough; finite-difference Jacobian, steps damped to keep the zones ordered and inside
+        [lo, hi].  Returns (zones, totals, solution)."""
+        totals = list(totals) if totals is not None else [
+            self.load / len(zones) if z.kappa == 1 else None for z in zones]
+        x = self.pack(zones, totals)
+        F, sol = self.residual(zones, totals)
+        for _ in range(iterations):
+            if np.max(np.abs(F)) <= 32 * np.finfo(float).eps:
+                break
+            steps = self._fd_steps(zones, totals)
+            J = np.empty((F.size, x.size))
+            for k in range(x.size):
+                xk = x.copy()
+                xk[k] += steps[k]
+                zk, tk = self.unpack(xk, zones)
+                if not _ordered(zk, lo, hi):      # step the other way at a gap or an edge
+                    steps[k] = -steps[k]
+                    xk[k] = x[k] + steps[k]
+                    zk, tk = self.unpack(xk, zones)
+                    if not _ordered(zk, lo, hi):
+                        raise ContactLossError(
+                            f"the contact zones {[(z.c, z.d) for z in zones]} are too close to "
+                            "each other or to an edge of the face to vary their ends")
+                J[:, k] = (self.residual(zk, tk)[0] - F) / steps[k]
+            try:
+                dx = -np.linalg.solve(J, F)
+            except np.linalg.LinAlgError:
+                raise ContactLossError("the side conditions of the contact zones are singular "
+                                       f"at ends {[(z.c, z.d) for z in zones]}") from None
+            t = 1.0
+            while True:
+                xn = x + t * dx
+                zn, tn = self.unpack(xn, zones)
+                if _ordered(zn, lo, hi):
+                    Fn, soln = self.residual(zn, tn)
+                    if np.max(np.abs(Fn)) < np.max(np.abs(F)) or t < 1e-3:
+                        break
+                t *= 0.5
+                if t < 1e-6:
+                    raise ContactLossError(
+                        "Newton's method for the contact ends made no progress at ends "
+                        f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})")
+            small = np.max(np.abs(xn - x) / np.abs(steps)) * 1e-7 <= 1e-15
+            x, zones, totals, F, sol = xn, zn, tn, Fn, soln
+            if small:
+                break
+        else:
+            if np.max(np.abs(F)) > 1e-10:
+                raise ContactLossError(
+                    f"Newton's method for the contact ends did not converge (residual "
+                    f"{np.max(np.abs(F)):.3g} after {iterations} iterations)")
+        return zones, totals, sol
+
+    def _fd_steps(self, zones, totals):
+        out = []
+        for z, t in zip(zones, totals):
+            for kind in (z.left, z.right):
+                if kind == FREE:
+                    out.append(1e-7 * z.width)
+            if z.kappa == 1:
+                out.append(1e-7 * max(abs(t), self.load))
+        return np.array(out)
+
+
+def _ordered(zones, lo, hi):
+    """c_1 >= lo, d_J <= hi, each zone of positive width, gaps between zones."""
+    if not (lo <= zones[0].c and zones[-1].d <= hi):
+        return False
+    prev = -math.inf
+    for z in zones:
+        if not (prev < z.c < z.d):
+            return False
+        prev = z.d
+    return True

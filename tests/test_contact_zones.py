@@ -1,0 +1,165 @@
+"""contact.zones: the equations of several contact zones and Newton's method for their ends.
+
+References: the single-zone solver (contact.solve, itself checked against the paper's corrected
+closed forms) for one zone of each index; mirror symmetry of a symmetric face at mu = 0; the
+side conditions checked directly on the returned pressure (load by quadrature of p, the gap
+between zones by quadrature of its slope H' - N11 Hc[p], which does not use the log potential
+the equations use).
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+import contact
+from contact.zones import CORNER, FREE, Zone, ZoneEquations
+
+MAT = contact.zhou2014()
+
+
+def _equations(H, dH, speed, mu_f, load, n=16, breaks=()):
+    k = contact.surface_constants(MAT, speed)
+    return ZoneEquations(slope=dH, rise=lambda x0, x1: H(x1) - H(x0), breaks=breaks,
+                         a=k.N12 * mu_f if mu_f else 0.0, b=k.N11, load=load, n=n), k
+
+
+@pytest.mark.parametrize("speed", [0.0, 0.6])
+@pytest.mark.parametrize("friction,direction", [(0.0, -1), (0.3, -1), (0.3, 1)])
+def test_one_free_free_zone_is_the_cylinder(speed, friction, direction):
+    R, P = 100.0, 0.01
+    ref = contact.solve(MAT, contact.CylindricalPunch(radius=R), load=P, speed=speed,
+                        friction=friction, direction=direction)
+    eq, _ = _equations(lambda X: X * X / (2 * R), lambda X: X / R, speed,
+                       -direction * friction, P, n=8)
+    (z,), _, sol = eq.newton([Zone(-0.5, 0.5)])
+    w = ref.ends[1] - ref.ends[0]
+    assert abs(z.c - ref.ends[0]) <= 1e-12 * w and abs(z.d - ref.ends[1]) <= 1e-12 * w
+    assert abs(sol.integral() - P) <= 1e-13 * P
+
+
+@pytest.mark.parametrize("friction", [0.0, 0.3])
+def test_corner_free_zone_is_the_triangular_punch(friction):
+    m0, P = 0.1, 0.02
+    ref = contact.solve(MAT, contact.TriangularPunch(slope=m0), load=P, speed=0.3,
+                        friction=friction)
+    eq, _ = _equations(lambda X: m0 * X, lambda X: np.full_like(X, m0), 0.3, friction, P, n=8)
+    (z,), _, sol = eq.newton([Zone(0.0, 1.0, left=CORNER)], lo=0.0)
+    assert z.c == 0.0
+    assert abs(z.d - ref.ends[1]) <= 1e-12 * ref.ends[1]
+
+
+def test_corner_corner_zone_is_the_flat_punch():
+    a, P = 0.5, 0.03
+    ref = contact.solve(MAT, contact.FlatPunch(half_width=a), load=P, speed=0.6, friction=0.3)
+    eq, _ = _equations(lambda X: 0.0 * X, lambda X: np.zeros_like(X), 0.6, 0.3, P, n=8)
+    (z,), (t,), sol = eq.newton([Zone(-a, a, CORNER, CORNER)], lo=-a, hi=a)
+    assert abs(t - P) <= 1e-14 * P
+    X = np.linspace(-0.45, 0.45, 7)
+    assert np.allclose(sol(X), ref.pressure(X), rtol=1e-12, atol=0)
+
+
+def _w_face():
+    H = lambda X: 0.05 * (X * X - 1.0) ** 2          # noqa: E731  valleys at X = +-1
+    dH = lambda X: 0.2 * X * (X * X - 1.0)           # noqa: E731
+    return H, dH
+
+
+def _gap_between(sol, k, dH, x0, x1, m=40):
+    """g(x1) - g(x0) = int_{x0}^{x1} (H' - N11 Hc[p]) dX, by Gauss-Legendre on the two halves
+    with X = end + (mid - end) t^2 (graded toward each end, where the integrand behaves like
+    dist^alpha next to a free end)."""
+    u, w = np.polynomial.legendre.leggauss(m)
+    t, wt = 0.5 * (u + 1.0), 0.5 * w
+    mid = 0.5 * (x0 + x1)
+    total = 0.0
+    for end in (x0, x1):
+        X = end + (mid - end) * t * t
+        dX = 2.0 * t * abs(mid - end)
+        total += np.sum(wt * dX * (dH(X) - k.N11 * sol.cauchy(X)))
+    return total
+
+
+@pytest.mark.parametrize("load", [1e-4, 1e-3, 1e-2])
+def test_w_face_two_zones_mirror_symmetric(load):
+    H, dH = _w_face()
+    eq, k = _equations(H, dH, 0.6, 0.0, load)
+    zs, _, sol = eq.newton([Zone(-1.05, -0.95), Zone(0.95, 1.05)])
+    (z0, z1) = zs
+    w = z0.width
+    assert abs(z0.c + z1.d) <= 1e-12 * w and abs(z0.d + z1.c) <= 1e-12 * w
+    assert abs(sol.integral(interval=0) - 0.5 * load) <= 1e-12 * load
+    # both zones touch the same face: the gap opens between them and closes again
+    assert abs(_gap_between(sol, k, dH, z0.d, z1.c)) <= 1e-10 * (H(0.0) - H(1.0))
+    # pressure positive inside each zone
+    for z in zs:
+        Xs = z.c + z.width * np.linspace(0.01, 0.99, 50)
+        assert np.all(sol(Xs) > 0)
+
+
+@pytest.mark.parametrize("direction", [-1, 1])
+def test_w_face_with_friction_side_conditions(direction):
+    H, dH = _w_face()
+    load = 1e-2
+    eq, k = _equations(H, dH, 0.6, -direction * 0.3, load)
+    zs, _, sol = eq.newton([Zone(-1.05, -0.95), Zone(0.95, 1.05)])
+    assert abs(sol.integral() - load) <= 1e-13 * load
+    for cons in sol.consistency:
+        assert abs(cons) <= 1e-12 * 0.2
+    assert abs(_gap_between(sol, k, dH, zs[0].d, zs[1].c)) <= 1e-10 * (H(0.0) - H(1.0))
+    # friction breaks the mirror symmetry: the zones shift the same way
+    shift0 = 0.5 * (zs[0].c + zs[0].d) + 1.0
+    shift1 = 0.5 * (zs[1].c + zs[1].d) - 1.0
+    assert np.sign(shift0) == np.sign(shift1) != 0
+
+
+# ----------------------------------------------------------------------------
+# continuation from first touch (contact.continuation)
+# ----------------------------------------------------------------------------
+from contact.continuation import follow_load          # noqa: E402
+from contact.face import Face                         # noqa: E402
+
+
+def test_load_curve_w_face_two_zones_merge_then_reach_the_edges():
+    """W face on [-2, 2]: two mirror-symmetric zones at light load, one zone after they merge,
+    both ends at the face edges (corners, index 1) at a large load; the load carried at every
+    step, the zones nested in the load (contact grows monotonically)."""
+    H, dH = _w_face()
+    k = contact.surface_constants(MAT, 0.6)
+    face = Face(dH, extent=(-2.0, 2.0), height=H)
+    eq = ZoneEquations(slope=dH, rise=face.rise, breaks=(), a=0.0, b=k.N11, load=1.0, n=16)
+    loads = np.geomspace(1e-4, 100.0, 13)
+    states = follow_load(face, eq, loads)
+    counts = [len(s.zones) for s in states]
+    assert counts[0] == 2 and counts[-1] == 1
+    assert counts == sorted(counts, reverse=True)            # 2 ... 2, 1 ... 1: one merge
+    for s in states:
+        assert abs(s.solution.integral() - s.load) <= 1e-12 * s.load
+        zs = s.zones
+        assert abs(zs[0].c + zs[-1].d) <= 1e-10 * (zs[-1].d - zs[0].c)          # mirror
+    last = states[-1].zones[0]
+    assert (last.c, last.d, last.left, last.right) == (-2.0, 2.0, CORNER, CORNER)
+    spans = [(s.zones[0].c, s.zones[-1].d) for s in states]
+    assert all(a1 <= a0 and b1 >= b0 for (a0, b0), (a1, b1) in zip(spans, spans[1:]))
+
+
+def test_load_curve_tilted_flat_punch_lifts_off_one_end():
+    """A flat face tilted by a constant slope, edges at -1 and 1: first touch at the low edge
+    (a corner, the other end free: index 0), the triangular punch translated, until the free
+    end reaches the high edge (index 1)."""
+    m0 = 0.05
+    k = contact.surface_constants(MAT, 0.3)
+    face = Face(lambda X: np.full_like(X, m0), extent=(-1.0, 1.0), height=lambda X: m0 * X)
+    eq = ZoneEquations(slope=face.slope, rise=face.rise, breaks=(), a=k.N12 * 0.3, b=k.N11,
+                       load=1.0, n=8)
+    states = follow_load(face, eq, [1e-3, 1e-2, 1e-1, 1.0, 10.0])
+    for s in states[:4]:
+        (z,) = s.zones
+        ref = contact.solve(MAT, contact.TriangularPunch(slope=m0), load=s.load, speed=0.3,
+                            friction=0.3)
+        assert (z.c, z.left, z.right) == (-1.0, CORNER, FREE)
+        assert abs((z.d + 1.0) - ref.ends[1]) <= 1e-12 * ref.ends[1]
+    (z,) = states[-1].zones
+    assert (z.c, z.d, z.left, z.right) == (-1.0, 1.0, CORNER, CORNER)
+    assert abs(states[-1].solution.integral() - 10.0) <= 1e-12 * 10.0
