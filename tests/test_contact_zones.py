@@ -163,3 +163,41 @@ def test_load_curve_tilted_flat_punch_lifts_off_one_end():
     (z,) = states[-1].zones
     assert (z.c, z.d, z.left, z.right) == (-1.0, 1.0, CORNER, CORNER)
     assert abs(states[-1].solution.integral() - 10.0) <= 1e-12 * 10.0
+
+
+def test_load_curve_rounded_flat_punch_against_ciavarella_hills_monno():
+    """Flat on |X| <= b, rounded with radius R beyond (static, isotropic, frictionless): the
+    contact half-width against the closed form of Ciavarella, Hills & Monno (1998), from
+    first touch on the flat stretch."""
+    import rounded_flat_reference as RF
+    k = contact.surface_constants(contact.Isotropic(1.0, 0.3), 0.0)
+    b, R = 0.5, 3.0
+
+    def dH(X):
+        return np.where(np.abs(X) > b, np.sign(X) * (np.abs(X) - b) / R, 0.0)
+
+    def H(X):
+        return np.where(np.abs(X) > b, (np.abs(X) - b) ** 2 / (2 * R), 0.0)
+
+    face = Face(dH, extent=(-3.0, 3.0), breaks=(-b, b), height=H)
+    eq = ZoneEquations(slope=dH, rise=face.rise, breaks=(-b, b), a=0.0, b=k.N11, load=1.0, n=24)
+    for s in follow_load(face, eq, [1e-3, 1e-2, 0.1, 1.0]):
+        (z,) = s.zones
+        a = RF.half_width_for_load(s.load, b, R, k.N11)
+        assert abs(z.d - a) <= 1e-12 * a and abs(z.c + a) <= 1e-12 * a
+
+
+def test_flat_face_of_finite_width_is_the_flat_punch():
+    """A flat face on [-a, a] touches everywhere at once: one zone with two corners (index 1),
+    the flat punch."""
+    a, P = 0.5, 0.03
+    ref = contact.solve(MAT, contact.FlatPunch(half_width=a), load=P, speed=0.6, friction=0.3)
+    k = contact.surface_constants(MAT, 0.6)
+    face = Face(lambda X: np.zeros_like(X), extent=(-a, a), height=lambda X: np.zeros_like(X))
+    eq = ZoneEquations(slope=face.slope, rise=face.rise, breaks=(), a=k.N12 * 0.3, b=k.N11,
+                       load=P, n=8)
+    (s,) = follow_load(face, eq, [P])
+    (z,) = s.zones
+    assert (z.c, z.d, z.left, z.right) == (-a, a, CORNER, CORNER)
+    X = np.linspace(-0.45, 0.45, 7)
+    assert np.allclose(s.solution(X), ref.pressure(X), rtol=1e-12, atol=0)
