@@ -201,3 +201,40 @@ def test_flat_face_of_finite_width_is_the_flat_punch():
     assert (z.c, z.d, z.left, z.right) == (-a, a, CORNER, CORNER)
     X = np.linspace(-0.45, 0.45, 7)
     assert np.allclose(s.solution(X), ref.pressure(X), rtol=1e-12, atol=0)
+
+
+def test_load_curve_w_face_against_closed_form_and_merge_load():
+    """Frictionless W face: zones against the closed form (bem_reference.w_face_closed_form:
+    two zones +-[c, b] with b^2 + c^2 = 2, (b^2 - c^2)^2 = 2 P |N11| / (pi A); one zone after
+    the merge at P* |N11| = 2 pi A) to 1e-10, on both sides of the merge load (at 0.99 P* the
+    inner ends sit at +-0.07 and move like sqrt(P* - P): a residual of eps moves them ~1/c
+    times more than elsewhere; measured 1.1e-11 there, 1e-15 at light load)."""
+    import bem_reference as B
+    H, dH = _w_face()
+    k = contact.surface_constants(MAT, 0.6)
+    face = Face(dH, extent=(-2.0, 2.0), height=H)
+    eq = ZoneEquations(slope=dH, rise=face.rise, breaks=(), a=0.0, b=k.N11, load=1.0, n=16)
+    p_merge = 2.0 * np.pi * B.W_AMPLITUDE / abs(k.N11)
+    loads = [1e-3 * p_merge, 0.3 * p_merge, 0.99 * p_merge, 1.01 * p_merge, 1.5 * p_merge]
+    for s in follow_load(face, eq, loads):
+        want = B.w_face_closed_form(k.N11, s.load)
+        got = [(z.c, z.d) for z in s.zones]
+        assert len(got) == len(want), (s.load / p_merge, got, want)
+        assert np.allclose(got, want, rtol=0, atol=1e-10), (s.load / p_merge, got, want)
+
+
+def test_w_face_with_friction_against_the_independent_bem():
+    """With friction (mu = 0.3, c = 0.6) the two zones are asymmetric; the boundary-element
+    solver of tests/bem_reference.py (its own discretisation; refined edges good to ~1e-6)
+    agrees to its accuracy."""
+    import bem_reference as B
+    H, dH = _w_face()
+    k = contact.surface_constants(MAT, 0.6)
+    mu_f = 0.3                       # direction -1
+    P = 1.30011
+    eq = ZoneEquations(slope=dH, rise=lambda x0, x1: H(x1) - H(x0), breaks=(),
+                       a=k.N12 * mu_f, b=k.N11, load=P, n=24)
+    zs, _, _ = eq.newton([Zone(-1.33, -0.44), Zone(0.46, 1.35)])
+    ref = B.solve_bem(B.w_face, B.W_FACE, k.N11, k.N12 * mu_f, P, m=500, refine=32)
+    assert len(ref.zones) == 2
+    assert np.allclose([(z.c, z.d) for z in zs], ref.zones, rtol=0, atol=2e-5)
