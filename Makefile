@@ -26,6 +26,7 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[bench]"
 	$(PY) -m validation.bench_sie
+	$(PY) -m validation.bench_sie2
 	$(PY) -m validation.bench_contact
 
 report: $(STAMP)

@@ -19,8 +19,9 @@ Method (per point z):
 * **near the interval** (|rho| <= 2, and |rho|^k |c_k| <= 30 max|c| for a series
   sum c_k F_k, |rho|^n <= 30 for the basis itself) the recurrence is run forward from F_0 in
   closed form: a rounding error in F_0 excites the dominant solution, which grows like
-  |rho|^k and stays below 30 eps of the result there; inside the interval (|rho| = 1) both
-  solutions oscillate and forward is stable;
+  |rho|^k and stays below 30 eps |F_0| there (30 eps max|c| |F_0| in a series; relative to a
+  small F_k itself it can be larger); inside the interval (|rho| = 1) both solutions
+  oscillate and forward is stable;
 * **away from it** Miller's backward recurrence from y_K = 0, y_{K-1} = 1, with K chosen
   so that |rho|^{-2(K-n)} < 1e-17, gives F_k up to one factor; F_0 itself follows from
   F_1 = P_1 F_0 + A_0 mu_0 / pi as F_0 = A_0 mu_0 y_0 / (pi (y_1 - P_1(z) y_0)), which
