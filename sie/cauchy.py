@@ -344,8 +344,12 @@ def _l0_right(wt: Weight, x):
     inside = x < 1.0
     if np.any(inside):
         xi = x[inside]
-        # int_x^1 w = mu_0 I_{(1-x)/2}(alpha+1, beta+1)
-        iw = wt.mu0 * sp.betainc(wt.alpha_p1, wt.beta_p1, 0.5 * (1.0 - xi))
+        # int_x^1 w = mu_0 I_{(1-x)/2}(alpha+1, beta+1); for x < 0 from the complement
+        # mu_0 (1 - I_{(1+x)/2}(beta+1, alpha+1)): next to -1 the argument (1-x)/2 would be
+        # rounded next to 1, and I there is ~(1+x)^(beta+1) (2.7e-8 off at x = -1 + 1e-12)
+        iw = np.where(xi >= 0.0,
+                      wt.mu0 * sp.betainc(wt.alpha_p1, wt.beta_p1, 0.5 * (1.0 - xi)),
+                      wt.mu0 * sp.betaincc(wt.beta_p1, wt.alpha_p1, 0.5 * (1.0 + xi)))
         out[inside] = l1 + (math.cos(math.pi * wt.alpha) * iw
                             - _poly_part_integral(wt, xi, 1.0)) / wt.sin
     mid = (x >= 1.0) & (x < 2.0)

@@ -19,14 +19,37 @@ carried by c_0).  I(x) is a regular integral whose integrand is smooth on each
 piece between breaks, so the composite Gauss-Jacobi rule converges spectrally.
 Two interleaved rules (q and q+1 nodes per piece) are kept, and each x uses the
 one whose nearest node is farther away, so r(t) - r(x) never cancels badly.
+
+Transforms of Psi = w delta_phi.  Psi solves a Psi + b H[Psi] = r on (-1, 1) (for
+kappa = -1 too: the sum above includes m = 0, so r has weighted mean zero), and r is
+orthogonal to P_m^{(-alpha,-beta)} for m < M = n - kappa, so the moments int Psi t^j
+vanish for j < n (the polynomial part carries them) and the Cauchy transform of Psi decays
+like z^-(n+1).  The sectionally holomorphic solution of the Riemann-Hilbert problem of the
+equation (Muskhelishvili 1953, sec. 107-110) is then
+
+    (1/pi) int Psi(t)/(t - z) dt = -(sin(pi alpha)/b) G(z) J(z),
+    G(z) = (z-1)^alpha (z+1)^beta,   J(z) = (1/pi) int (1-t)^-alpha (1+t)^-beta r(t)/(t - z) dt
+
+(principal powers, cut on [-1, 1]; G+/G- = e^{2 pi i alpha} = -(b + i a)/(b - i a) is the
+jump the equation asks for, and a polynomial multiple of G cannot be added because of the
+decay).  J involves r only, which is cheap and has no singularity but its kinks at the
+breaks; next to the interval it is computed with r(x0) subtracted (x0 the point of
+[-1, 1] nearest z) and r(x0) times the weight transform in closed form added back, on pieces
+graded geometrically toward x0 down to |z - x0|.  Away from the interval the fixed rule
+``w_rule`` summed over Psi at its nodes is used where it resolves 1/(t - z) (Bernstein
+ellipses).  The logarithmic potential V(x) = (1/pi) int Psi log|x - t| dt: outside the
+interval (and at its ends) by ``w_rule`` with delta_phi at the nearer end subtracted (the
+closed form of the weight's potential adds it back), inside from V' = -H[Psi] =
+(a Psi - r)/b integrated from the nearer end.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from .cauchy import Weight, _log_ratio, f0_closed, l0
 from .errors import call_checked
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_series
@@ -60,12 +83,10 @@ def graded_points(breaks):
 _Q_SMALL = 16         # Gauss nodes on a graded sub-interval (pole at >= 1.15 its length)
 
 
-def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
-    """Composite rule for int (1-x)^alpha (1+x)^beta g on the graded mesh ``pts``:
-    q (+ shift) nodes on the pieces that span most of a gap between breaks, fewer (in
-    proportion to the piece, at least q_small) on the geometric sub-intervals next to a
-    break.  End pieces carry their end's Jacobi weight in the rule; elsewhere it is smooth
-    and multiplies the Gauss-Legendre weights."""
+def _panels(q, breaks, pts, q_small=_Q_SMALL, shift=0):
+    """The pieces of the graded mesh ``pts`` and their node counts: q (+ shift) on the
+    pieces that span most of a gap between breaks, fewer (in proportion to the piece, at
+    least q_small) on the geometric sub-intervals next to a break.  Returns (lo, hi, counts)."""
     edges = np.concatenate([[-1.0], pts, [1.0]])
     gaps = np.concatenate([[-1.0], breaks, [1.0]])
     los, his = edges[:-1], edges[1:]
@@ -73,18 +94,38 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
     gap = gaps[j] - gaps[j - 1]
     big = ((his - los) > 0.2 * gap) | (los == -1.0) | (his == 1.0)
     counts = np.where(big, q, q_small + np.ceil(q * (his - los) / gap).astype(int)) + shift
-    xs, ws = [], []
+    return los, his, counts
+
+
+def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details=False):
+    """Composite rule for int (1-x)^alpha (1+x)^beta g on the graded mesh ``pts``, with the
+    node counts of :func:`_panels`.  End pieces carry their end's Jacobi weight in the rule;
+    elsewhere it is smooth and multiplies the Gauss-Legendre weights.
+
+    Returns the ascending nodes and their weights; with ``details`` also, per node, the
+    index of its piece and 1 - x, 1 + x to full relative precision (a node of a piece
+    1e-12 wide at an end can round onto the end itself)."""
+    los, his, counts = _panels(q, breaks, pts, q_small, shift)
+    xs, ws, ps, oms, ops = [], [], [], [], []
     for qq in np.unique(counts):                 # all pieces with the same node count at once
-        sel = counts == qq
+        sel = np.flatnonzero(counts == qq)
         lo, hi = los[sel], his[sel]
         half = 0.5 * (hi - lo)
         inner = (lo != -1.0) & (hi != 1.0)
         if inner.any():                          # Gauss-Legendre times the smooth weight
             u, wu = gauss_jacobi_cached(int(qq), 0.0, 0.0)
-            x = lo[inner, None] + half[inner, None] * (u + 1.0)
-            w = (half[inner, None] * wu) * (1.0 - x) ** alpha * (1.0 + x) ** beta
+            li, hi_i, hf = lo[inner, None], hi[inner, None], half[inner, None]
+            x = li + hf * (u + 1.0)
+            # 1 -+ x from the piece's own distance to the end (exact next to it); formed from
+            # the rounded x, 1 + x at x ~ -1 + 1e-12 keeps 4 digits and int w loses 4e-10
+            one_minus = (1.0 - hi_i) + hf * (1.0 - u)
+            one_plus = (1.0 + li) + hf * (1.0 + u)
+            w = (hf * wu) * one_minus ** alpha * one_plus ** beta
             xs.append(x.ravel())
             ws.append(w.ravel())
+            ps.append(np.repeat(sel[inner], int(qq)))
+            oms.append(one_minus.ravel())
+            ops.append(one_plus.ravel())
         for i in np.flatnonzero(~inner):         # an end piece: its end's Jacobi weight
             ea = alpha if hi[i] == 1.0 else 0.0
             eb = beta if lo[i] == -1.0 else 0.0
@@ -95,11 +136,28 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0):
                 w = w * (1.0 - x) ** alpha
             if lo[i] != -1.0:
                 w = w * (1.0 + x) ** beta
+            one_minus = half[i] * (1.0 - u) if hi[i] == 1.0 else 1.0 - x
+            one_plus = half[i] * (1.0 + u) if lo[i] == -1.0 else 1.0 + x
             xs.append(x)
             ws.append(w)
+            ps.append(np.full(x.size, sel[i]))
+            oms.append(one_minus)
+            ops.append(one_plus)
     x, w = np.concatenate(xs), np.concatenate(ws)
-    order = np.argsort(x, kind="stable")
-    return x[order], w[order]
+    piece = np.concatenate(ps)
+    order = np.lexsort((x, piece))               # by piece, then by node: ascending
+    if not details:
+        return x[order], w[order]
+    return (x[order], w[order], piece[order], np.concatenate(oms)[order],
+            np.concatenate(ops)[order])
+
+
+def _nearest_distance(nodes, x):
+    """Distance from each x to the nearest of the ascending ``nodes``."""
+    i = np.searchsorted(nodes, x)
+    below = np.abs(x - nodes[np.maximum(i - 1, 0)])
+    above = np.abs(nodes[np.minimum(i, nodes.size - 1)] - x)
+    return np.minimum(below, above)
 
 
 def _end_grading(breaks):
@@ -114,9 +172,72 @@ def _end_grading(breaks):
     return np.asarray(out)
 
 
+# transforms of w delta_phi off the interval and its log potential
+_FAR_EXPONENT = 40.0  # w_rule is used for 1/(t - v) where 2 q log(rho) >= 40 on every piece
+_NEAR_RATIO = 4.0     # geometric grading toward Re v (pieces see the pole at >= 1/3 length)
+_NEAR_Q = 16          # Gauss nodes on the smallest graded pieces
+_KEEP_END = 1.5       # grading point p kept while |end - p| >= |p - x0| / 2
+_DELTA_FLOOR = 1e-15  # grading toward Re v stops at this |Im v|: closer, the integrand is
+                      # bounded by |r'| on the remaining 1e-15, and nodes could not be placed
+_CHUNK_FAR = 256      # points per block of the dense sums over w_rule
+_CHUNK_NODES = 50_000  # quadrature nodes per block of the near-line transform (the kernel
+                       # term of r makes an array of (nodes, n + 16) per interval)
+
+
+def _log_rho(z, lo, hi):
+    """log of the Bernstein-ellipse parameter of z for the piece [lo, hi]: the ellipse with
+    foci lo, hi through z; sqrt(u - 1) sqrt(u + 1) ~ u has its cut on [-1, 1] only."""
+    u = (2.0 * z - (lo + hi)) / (hi - lo)
+    return np.log(np.abs(u + np.sqrt(u - 1.0) * np.sqrt(u + 1.0)))
+
+
+def _panel_nodes(lo, hi, counts, at_left, at_right, lm, lp, ea, eb, ea1, eb1, eab1):
+    """Gauss rules for int (1-t)^ea (1+t)^eb g(t) dt on pieces [lo, hi], all given as offsets
+    d = t - x0 from a centre x0 with 1 - x0 = lm, 1 + x0 = lp (per piece), so that 1 - t =
+    lm - d and 1 + t = lp + d keep full relative precision next to an end.
+
+    A piece with ``at_right`` (``at_left``) ends at +1 (-1) and carries that end's factor in
+    its Gauss-Jacobi rule; elsewhere the factor is smooth and multiplies the Gauss-Legendre
+    weights.  ``ea1``, ``eb1``, ``eab1`` are 1 + ea, 1 + eb, 1 + ea + eb, exact.  Pieces
+    with the same count and end flags are done together.  Returns (d, weights, piece index)."""
+    key = 4 * counts.astype(np.int64) + 2 * at_left.astype(np.int64) + at_right.astype(np.int64)
+    ds, ws, owners = [], [], []
+    for k in np.unique(key):
+        sel = np.flatnonzero(key == k)
+        cnt, L, R = int(k // 4), bool(k & 2), bool(k & 1)
+        u, wu = gauss_jacobi_cached(cnt, ea if R else 0.0, eb if L else 0.0)
+        lo_s, hi_s = lo[sel, None], hi[sel, None]
+        half = 0.5 * (hi_s - lo_s)
+        if R:
+            one_minus = half * (1.0 - u)            # 1 - t, exact next to +1
+            d = hi_s - one_minus
+        else:
+            d = lo_s + half * (1.0 + u)
+            one_minus = lm[sel, None] - d
+        one_plus = half * (1.0 + u) if L else lp[sel, None] + d
+        expo = eab1 if (L and R) else (ea1 if R else (eb1 if L else 1.0))
+        w = wu * half ** expo
+        if not R:
+            w = w * one_minus ** ea
+        if not L:
+            w = w * one_plus ** eb
+        ds.append(d.ravel())
+        ws.append(w.ravel())
+        owners.append(np.repeat(sel, cnt))
+    return np.concatenate(ds), np.concatenate(ws), np.concatenate(owners)
+
+
 @dataclass(eq=False)
 class InversionRemainder:
-    """delta_phi, its integral and Cauchy transform (see module docstring)."""
+    """delta_phi, its integral, Cauchy transform and logarithmic potential (module docstring).
+
+    Costs per point (n basis functions, q ~ n + 24 nodes per piece between breaks, N ~ 10 q
+    to 25 q the size of ``w_rule``): delta_phi ~N; the Cauchy transform where ``w_rule``
+    resolves the pole ~N, next to the interval r at ~20 nodes on each of
+    2 log_4(2/|Im z|) graded pieces plus ~n (900 nodes at |Im z| = 1e-12 for n = 32, 1000
+    for n = 128; 500 to 600 at 1e-6), where the coupling and kernel terms of r dominate
+    when present; the log potential outside ~N, inside ~q^2 (one piece of ``w_rule``
+    interpolated) plus r at q nodes per piece between breaks."""
     sol: object                 # the IntervalSolution (polynomial part)
     a: float
     b: float
@@ -126,7 +247,13 @@ class InversionRemainder:
     g_coef: np.ndarray          # projections g_m of g = f - other
     const: float = 0.0
     w_rule: tuple = ()
+    w_panels: tuple = ()                # (lo, hi, counts) of the pieces of w_rule
+    w_ends: tuple = ()                  # per node of w_rule: its piece, 1 - t, 1 + t (exact)
+    q: int = 0                          # nodes per piece between breaks of the 1/w rules
+    breaks: np.ndarray = field(default_factory=lambda: np.empty(0))
     _wphi: np.ndarray | None = None     # w_rule weights times delta_phi at its nodes
+    _log_ends: tuple | None = None      # the log potential of w delta_phi at -1 and +1
+    _interp: tuple | None = None        # barycentric data of delta_phi on the w_rule pieces
 
     @classmethod
     def build(cls, piece, a, b, f, other, breaks, s, ws, fs, g_coef):
@@ -150,10 +277,17 @@ class InversionRemainder:
         # rule for integrals against w: delta_phi behaves like (x - c) log|x - c| at a break c,
         # so the pieces are graded geometrically toward each break (hp quadrature; without
         # grading int psi converged only like n^-3: 2e-8 at n = 192)
-        # also graded toward +-1: cauchy_outside(x) for x just outside an end has its pole
-        # next to that end (x = 1.001 lost 5e-8 at n = 48 without it)
-        self.w_rule = _graded_rule(max(q, 24), alpha, beta, breaks,
-                                   np.union1d(pts, _end_grading(breaks)), _Q_SMALL + 2)
+        # also graded toward +-1: the Cauchy transform at x just outside an end sums this
+        # rule where it resolves the pole (at x = 1.001 an ungraded rule loses 5e-8 at
+        # n = 48), and so does the log potential outside the interval
+        w_pts = np.union1d(pts, _end_grading(breaks))
+        tw, ww, piece_w, om_w, op_w = _graded_rule(max(q, 24), alpha, beta, breaks, w_pts,
+                                                   _Q_SMALL + 2, details=True)
+        self.w_rule = (tw, ww)
+        self.w_ends = (piece_w, om_w, op_w)
+        self.w_panels = _panels(max(q, 24), breaks, w_pts, _Q_SMALL + 2)
+        self.q = q
+        self.breaks = breaks
         if piece.kappa == 1:
             tw, ww = self.w_rule
             self.const = -float(ww @ self._phi_no_const(tw)) / jacobi_moment_shifted(
@@ -174,7 +308,7 @@ class InversionRemainder:
         fx = call_checked(self.f, "f", (x,), x.shape)
         rx = self._r(x, fx)
         # per point, the rule whose nearest node is farther from x
-        dist = [np.min(np.abs(nodes[None, :] - x[:, None]), axis=1) for nodes, _, _ in self.rules]
+        dist = [_nearest_distance(nodes, x) for nodes, _, _ in self.rules]
         choice = (dist[1] > dist[0]).astype(int)
         integral = np.empty(x.shape)
         for idx, (nodes, weights, r_nodes) in enumerate(self.rules):
@@ -201,15 +335,289 @@ class InversionRemainder:
         return self._phi_no_const(x) + self.const
 
     def cauchy_inside(self, x, psi_full):
-        """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi."""
+        """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi.
+
+        kappa = -1: psi solves the equation with g minus its weighted mean g_0 (the
+        consistency; the basis has no image of P_0^{(-alpha,-beta)}), so g_0 is taken out."""
         gx = call_checked(self.f, "f", (x,), x.shape)
         if self.other is not None:
             gx = gx - self.other(x)
+        if self.sol.kappa == -1:
+            gx = gx - self.g_coef[0]
         return (gx - self.a * psi_full) / self.b
 
-    def cauchy_outside(self, x):
-        """(1/pi) int w delta_phi/(t - x) dt by the graded composite rule (x off [-1, 1])."""
-        tw, ww = self.w_rule
+    # -- Cauchy transform off the open interval ---------------------------------------
+    def _w_values(self):
+        """w_rule weights times delta_phi at its nodes (computed once)."""
         if self._wphi is None:
+            tw, ww = self.w_rule
             self._wphi = ww * self.phi(tw)
-        return (self._wphi[None, :] / (tw[None, :] - x[:, None])).sum(axis=1) / math.pi
+        return self._wphi
+
+    def _resolved_by_w_rule(self, v):
+        """True where the fixed rule ``w_rule`` integrates 1/(t - v) to rounding on every
+        piece: Gauss with q nodes on a piece whose Bernstein ellipse through v has parameter
+        rho errs by ~rho^(-2q) (Trefethen, ATAP ch. 19), so 2 q log(rho) >= _FAR_EXPONENT."""
+        lo, hi, counts = self.w_panels
+        ok = np.ones(v.shape, dtype=bool)
+        for start in range(0, v.size, _CHUNK_FAR):
+            vv = v[start:start + _CHUNK_FAR].astype(complex)
+            ok[start:start + _CHUNK_FAR] = np.all(
+                2.0 * counts[None, :] * _log_rho(vv[:, None], lo[None, :], hi[None, :])
+                >= _FAR_EXPONENT, axis=1)
+        return ok
+
+    def cauchy_off(self, v, ends=None):
+        """(1/pi) int_{-1}^{1} w delta_phi / (t - v) dt at v off the open interval (-1, 1):
+        complex v with Im v != 0, or real v with |v| > 1 (complex result; real there).
+        ``ends``: (v - 1, v + 1) from the real coordinate (full relative precision next to
+        an end).
+
+        Where the fixed rule ``w_rule`` resolves the pole (:meth:`_resolved_by_w_rule`),
+        its sum; elsewhere, with Psi = w delta_phi solving a Psi + b H[Psi] = r on (-1, 1) and
+        int Psi = 0, the Riemann-Hilbert solution (Muskhelishvili 1953, sec. 107-110)
+
+            (1/pi) int Psi/(t - z) dt = -(sin(pi alpha)/b) G(z) J(z),
+            G(z) = (z-1)^alpha (z+1)^beta,
+            J(z) = (1/pi) int (1-t)^-alpha (1+t)^-beta r(t)/(t - z) dt
+
+        (principal powers, cut on [-1, 1]): G+/G- = e^{2 pi i alpha} = -(b + i a)/(b - i a)
+        is the jump the equation imposes, and no polynomial multiple of G may be added
+        because the left side decays at infinity like z^-(n+1).  J needs only r, which is
+        cheap and has no singularity but kinks at the breaks; see :meth:`_near_j`."""
+        v = np.asarray(v)
+        zm1, zp1 = (v - 1.0, v + 1.0) if ends is None else ends
+        v, zm1, zp1 = (np.asarray(a, dtype=complex) for a in (v, zm1, zp1))
+        out = np.empty(v.shape, dtype=complex)
+        if v.size == 0:
+            return out
+        far = self._resolved_by_w_rule(v)
+        if np.any(far):
+            tw, _ = self.w_rule
+            wphi = self._w_values()
+            vf = v[far]
+            res = np.empty(vf.shape, dtype=complex)
+            for start in range(0, vf.size, _CHUNK_FAR):
+                vv = vf[start:start + _CHUNK_FAR]
+                res[start:start + _CHUNK_FAR] = (wphi[None, :]
+                                                 / (tw[None, :] - vv[:, None])).sum(axis=1)
+            out[far] = res / math.pi
+        near = ~far
+        if np.any(near):
+            out[near] = self._near_cauchy(v[near], zm1[near], zp1[near])
+        return out
+
+    def _near_cauchy(self, v, zm1, zp1):
+        """-(sin(pi alpha)/b) G(v) J(v) (see :meth:`cauchy_off`)."""
+        sol = self.sol
+        e = sol.exp
+        # the weight 1/w = (1-t)^-alpha (1+t)^-beta, its shifted exponents carried exactly
+        inv = Weight(alpha=-e.alpha, beta=-e.beta, alpha_p1=e.alpha_m1, beta_p1=e.beta_m1,
+                     alpha_m1=e.alpha_p1, sin=-e.sin)
+        # the subtraction point x0: the point of [-1, 1] nearest to v, or the end nearer to it
+        # when that end is closer to it than v is (otherwise the piece between x0 and the
+        # graded pieces on the far side of it would see the end's singular weight at a
+        # fraction of its length: at v = 0.997 + 2.05i, 16 nodes were then off by 1e-8)
+        dist = np.abs(v.imag)
+        right = (zm1.real >= 0.0) | ((-zm1.real < dist) & (-zm1.real <= zp1.real))
+        left = ((zp1.real <= 0.0) | (zp1.real < dist)) & ~right
+        x0 = np.where(right, 1.0, np.where(left, -1.0, v.real))
+        lm = np.where(right, 0.0, np.where(left, 2.0, -zm1.real))          # 1 - x0
+        lp = np.where(right, 2.0, np.where(left, 0.0, zp1.real))           # 1 + x0
+        zeta = np.where(right, zm1, np.where(left, zp1, 1j * v.imag))      # v - x0
+        r0 = self._r(x0, call_checked(self.f, "f", (x0,), x0.shape))
+        J = self._near_j(x0, lm, lp, zeta, r0) + r0 * f0_closed(inv, v, (zm1, zp1))
+        m = -sol.kappa                                   # alpha + beta
+        G = np.exp(e.alpha * _log_ratio(zm1, zp1)) * (zp1 ** m if m else 1.0)
+        return -(e.sin / self.b) * G * J
+
+    def _near_j(self, x0, lm, lp, zeta, r0):
+        """(1/pi) int (1-t)^-alpha (1+t)^-beta (r(t) - r0) / (t - v) dt, v = x0 + zeta,
+        x0 in [-1, 1] with |zeta| <= its distance to the ends unless it is an end (lm =
+        1 - x0, lp = 1 + x0, all exact), r0 = r(x0).
+
+        The integrand is bounded (|r'| near x0) but varies on the scale |zeta| there, and r
+        has kinks at the breaks: Gauss on pieces split at the breaks, at x0 and at
+        x0 +- |zeta| 4^j (a geometric mesh toward x0, as for a pole at distance |zeta|:
+        each piece sees the pole at >= 1/3 of its length, rho >= 3, so 16 nodes leave
+        3^-32 ~ 5e-16); node counts grow with the piece ((M/2 + 8) sqrt(len/2) more, M the
+        number of projections) so that the polynomial part of r stays resolved.  Offsets
+        d = t - x0 are carried so that t - v = d - zeta keeps full relative precision at any
+        |zeta|."""
+        sol = self.sol
+        e = sol.exp
+        out = np.zeros(x0.shape, dtype=complex)
+        delta = np.maximum(np.abs(zeta), _DELTA_FLOOR)
+        levels = int(np.ceil(math.log(2.0 / delta.min()) / math.log(_NEAR_RATIO))) + 1
+        per_point = 2 * levels + self.breaks.size + 3
+        # r is a polynomial of degree < M (the projection) plus f - other, analytic between
+        # breaks; p(t)/(t - v) = (polynomial of degree < M - 1) + p(v)/(t - v), so M/2 nodes
+        # more than the pole needs integrate the polynomial part exactly on any piece; fewer
+        # on short pieces, where its higher derivatives are small (scaled by length^k)
+        q_poly = 0.5 * self.g_coef.size + 8
+        chunk = max(1, _CHUNK_NODES // (per_point * (_NEAR_Q + 4)))
+        for start in range(0, x0.size, chunk):
+            sl = slice(start, start + chunk)
+            xc, lmc, lpc, zc, dc, r0c = x0[sl], lm[sl], lp[sl], zeta[sl], delta[sl], r0[sl]
+            P = xc.size
+            steps = dc[:, None] * _NEAR_RATIO ** np.arange(levels)[None, :]
+            # a grading point p toward an end is kept only while |end - p| >= |p - x0| / 2:
+            # the Gauss-Legendre piece before it then sees the end's singular weight at
+            # >= 2/3 of its own length, and the end piece (Gauss-Jacobi) sees x0 at >= 1/7
+            up = np.where(steps * _KEEP_END <= lmc[:, None], steps, 0.0)
+            down = np.where(steps * _KEEP_END <= lpc[:, None], -steps, 0.0)
+            brk = self.breaks[None, :] - xc[:, None]
+            edges = np.concatenate([-lpc[:, None], down, np.zeros((P, 1)), up, brk,
+                                    lmc[:, None]], axis=1)
+            edges.sort(axis=1)
+            lo, hi = edges[:, :-1], edges[:, 1:]
+            owner = np.broadcast_to(np.arange(P)[:, None], lo.shape)
+            keep = hi > lo
+            lo, hi, owner = lo[keep], hi[keep], owner[keep]
+            at_left = lo == -lpc[owner]
+            at_right = hi == lmc[owner]
+            length = hi - lo
+            counts = _NEAR_Q + 4 * np.ceil(q_poly * np.sqrt(0.5 * length) / 4.0).astype(int)
+            d, w, own = _panel_nodes(lo, hi, counts, at_left, at_right, lmc[owner], lpc[owner],
+                                     -e.alpha, -e.beta, e.alpha_m1, e.beta_m1, 1.0 + sol.kappa)
+            pt = owner[own]
+            t = xc[pt] + d
+            rt = self._r(t, call_checked(self.f, "f", (t,), t.shape))
+            terms = w * (rt - r0c[pt]) / (d - zc[pt])
+            out[sl] = (np.bincount(pt, weights=terms.real, minlength=P)
+                       + 1j * np.bincount(pt, weights=terms.imag, minlength=P)) / math.pi
+        return out
+
+    # -- logarithmic potential -------------------------------------------------------
+    def log_potential(self, v, ends=None):
+        """(1/pi) int_{-1}^{1} w delta_phi log|v - t| dt at real v (any v).
+
+        |v| >= 1: the sum of ``w_rule`` with delta_phi(e) subtracted at the nearer end e and
+        added back through the closed form of (1/pi) int w log|v - t| (:func:`sie.cauchy.l0`):
+        the rest vanishes at e like (1 -+ t)^(1 + exponent), so the logarithm's singularity
+        at or next to e costs nothing.  |v| < 1: from V' = -H[Psi] = (a Psi - r)/b (the
+        equation on (-1, 1)) integrated from the nearer end e,
+
+            V(v) = V(e) + (a int_e^v Psi - int_e^v r) / b,
+
+        with int_e^v Psi from the piece sums of ``w_rule`` plus one Gauss rule on the part of
+        the piece containing v, and int_e^v r by Gauss-Legendre split at the breaks."""
+        v = np.asarray(v, dtype=float)
+        zm1, zp1 = (v - 1.0, v + 1.0) if ends is None else (np.asarray(ends[0], dtype=float),
+                                                            np.asarray(ends[1], dtype=float))
+        out = np.empty(v.shape)
+        inside = (zm1 < 0.0) & (zp1 > 0.0)
+        if np.any(~inside):
+            out[~inside] = self._log_outside(v[~inside], zm1[~inside], zp1[~inside])
+        if np.any(inside):
+            out[inside] = self._log_inside(v[inside], zm1[inside], zp1[inside])
+        return out
+
+    def _log_outside(self, v, zm1, zp1):
+        tw, ww = self.w_rule
+        phi_w = self._w_values() / ww
+        right = zm1 >= 0.0
+        phi_e = self.phi(np.array([-1.0, 1.0]))
+        pe = np.where(right, phi_e[1], phi_e[0])
+        _, om, op = self.w_ends
+        out = np.empty(v.shape)
+        for start in range(0, v.size, _CHUNK_FAR):
+            sl = slice(start, start + _CHUNK_FAR)
+            # |v - t| from the offset to the nearer end: no cancellation next to it
+            dist = np.where(right[sl, None], zm1[sl, None] + om[None, :],
+                            op[None, :] - zp1[sl, None])
+            out[sl] = (ww[None, :] * (phi_w[None, :] - pe[sl, None]) * np.log(dist)).sum(axis=1)
+        return out / math.pi + pe * l0(self.sol.weight_data, v)
+
+    def _phi_in_piece(self, t, k):
+        """delta_phi at points t of the pieces k of ``w_rule``.  On a piece where delta_phi is
+        analytic in the Bernstein ellipse rho with q_k log(rho) >= _FAR_EXPONENT (rho from
+        the nearest break: the only singularities of delta_phi), the interpolant through
+        its q_k nodes (barycentric form, Berrut & Trefethen, SIAM Rev. 46 (2004) 501) is
+        exact to ~rho^(-q_k) < 4e-18 and costs O(q_k) instead of a full evaluation; the
+        projection's polynomial part (degree < q_k) is interpolated exactly.  Elsewhere
+        (the short pieces next to a break) delta_phi itself."""
+        if self._interp is None:
+            lo, hi, counts = self.w_panels
+            tw, ww = self.w_rule
+            starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+            brk = self.breaks.astype(complex)
+            ok = np.ones(lo.size, dtype=bool)
+            if brk.size:
+                ok = np.all(counts[:, None] * _log_rho(brk[None, :], lo[:, None], hi[:, None])
+                            >= _FAR_EXPONENT, axis=1)
+            phi_w = self._w_values() / ww
+            bary = {}
+            for j in np.flatnonzero(ok):
+                sl = slice(starts[j], starts[j] + counts[j])
+                s = (2.0 * tw[sl] - (lo[j] + hi[j])) / (hi[j] - lo[j])
+                if not np.all(np.diff(s) > 0.0):    # a piece within rounding of a point of
+                    ok[j] = False                   # the mesh (two grading points that agree
+                    continue                        # to 1 ulp): its nodes coincide
+                diff = s[:, None] - s[None, :]
+                np.fill_diagonal(diff, 1.0)
+                logs = np.log(np.abs(diff)).sum(axis=1)       # scaled: no overflow at large q
+                lam = np.prod(np.sign(diff), axis=1) * np.exp(logs.min() - logs)
+                bary[j] = (s, lam, phi_w[sl])
+            self._interp = (ok, bary)
+        ok, bary = self._interp
+        out = np.empty(t.shape)
+        direct = ~ok[k]
+        if np.any(direct):
+            out[direct] = self.phi(t[direct])
+        lo, hi, _ = self.w_panels
+        for j in np.unique(k[~direct]):
+            sel = np.flatnonzero(k == j)
+            s, lam, fj = bary[j]
+            x = (2.0 * t[sel] - (lo[j] + hi[j])) / (hi[j] - lo[j])
+            diff = x[:, None] - s[None, :]
+            hit = diff == 0.0
+            diff[hit] = 1.0
+            c = lam / diff
+            val = (c @ fj) / c.sum(axis=1)
+            rows, cols = np.nonzero(hit)
+            val[rows] = fj[cols]
+            out[sel] = val
+        return out
+
+    def _log_inside(self, v, zm1, zp1):
+        sol = self.sol
+        e = sol.exp
+        if self._log_ends is None:
+            ends = np.array([-1.0, 1.0])
+            self._log_ends = tuple(self._log_outside(ends, ends - 1.0, ends + 1.0))
+        lo_w, hi_w, counts_w = self.w_panels
+        tw, _ = self.w_rule
+        wphi = self._w_values()
+        K = lo_w.size
+        sums = np.bincount(self.w_ends[0], weights=wphi, minlength=K)
+        before = np.concatenate([[0.0], np.cumsum(sums)])            # int_{-1}^{lo_k} Psi
+        after = np.concatenate([np.cumsum(sums[::-1])[::-1], [0.0]])   # int_{lo_k}^{1} Psi
+        k = np.clip(np.searchsorted(hi_w, v, side="right"), 0, K - 1)  # piece holding v
+        left = v < 0.0
+        lm, lp = -zm1, zp1
+        # the part of piece k between v and the nearer end's side, as offsets from v
+        lo = np.where(left, lo_w[k] - v, 0.0)
+        hi = np.where(left, 0.0, hi_w[k] - v)
+        at_left = left & (k == 0)
+        at_right = ~left & (k == K - 1)
+        lo = np.where(at_left, -lp, lo)
+        hi = np.where(at_right, lm, hi)
+        d, w, o = _panel_nodes(lo, hi, counts_w[k] + 2, at_left, at_right, lm, lp,
+                               e.alpha, e.beta, e.alpha_p1, e.beta_p1, 1.0 - sol.kappa)
+        part = np.bincount(o, weights=w * self._phi_in_piece(v[o] + d, k[o]), minlength=v.size)
+        int_psi = np.where(left, before[k] + part, -(part + after[k + 1]))      # int_e^v Psi
+        # int_e^v r: Gauss-Legendre on the pieces between breaks, clipped to [e, v]
+        gaps = np.concatenate([[-1.0], self.breaks, [1.0]])
+        glo = np.where(left[:, None], np.minimum(gaps[None, :-1], v[:, None]),
+                       np.maximum(gaps[None, :-1], v[:, None]))
+        ghi = np.where(left[:, None], np.minimum(gaps[None, 1:], v[:, None]),
+                       np.maximum(gaps[None, 1:], v[:, None]))
+        u, wu = gauss_jacobi_cached(int(self.q), 0.0, 0.0)
+        half = 0.5 * (ghi - glo)
+        t = glo[..., None] + half[..., None] * (1.0 + u)
+        rt = self._r(t.ravel(), call_checked(self.f, "f", (t.ravel(),), (t.size,)))
+        int_r = ((rt.reshape(t.shape) * wu).sum(axis=2) * half).sum(axis=1)
+        int_r = np.where(left, int_r, -int_r)
+        base = np.where(left, self._log_ends[0], self._log_ends[1])
+        return base + (self.a * int_psi - int_r) / self.b

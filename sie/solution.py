@@ -92,33 +92,38 @@ class IntervalSolution:
 
     def cauchy_local(self, v, cplx, ends=None):
         """(1/pi) int_{-1}^{1} w phi / (u - v) du (real v: principal value inside);
-        ``ends`` = (v - 1, v + 1) from the real coordinate."""
+        ``ends`` = (v - 1, v + 1) from the real coordinate.
+
+        With breaks the pointwise correction adds (1/pi) int w delta_phi / (u - v) du: at real
+        v inside through the equation itself
+        (:meth:`sie.remainder.InversionRemainder.cauchy_inside`), elsewhere (complex v, real v
+        outside) by :meth:`sie.remainder.InversionRemainder.cauchy_off`."""
         out = cauchy_series(self.coefficients, self.weight_data, v, ends=ends)
         rem = self.remainder
         if rem is None:
             return out if cplx else out.real
-        if cplx:
-            raise EvaluationPointError(
-                "the Cauchy transform at complex points is not available for a solution "
-                "solved with breaks= (its pointwise correction is known on the real line "
-                "only); solve without breaks and a larger n")
-        out = out.real
-        inside = np.abs(v) < 1.0
+        if not cplx:
+            out = out.real
+            inside = np.abs(v) < 1.0
+        else:
+            inside = np.zeros(v.shape, dtype=bool)      # complex v is never on (-1, 1)
         if np.any(inside):
             vi = v[inside]
             out[inside] = rem.cauchy_inside(vi, self.psi_local(vi))
-        if np.any(~inside):
-            out[~inside] = out[~inside] + rem.cauchy_outside(v[~inside])
+        off = ~inside
+        if np.any(off):
+            e = None if ends is None else (ends[0][off], ends[1][off])
+            corr = rem.cauchy_off(v[off], e)
+            out[off] = out[off] + (corr if cplx else corr.real)
         return out
 
     def log_local(self, v, ends=None):
-        """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v."""
+        """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v (with breaks, plus the
+        correction's part, :meth:`sie.remainder.InversionRemainder.log_potential`)."""
+        out = log_potential_series(self.coefficients, self.weight_data, v, ends)
         if self.remainder is not None:
-            raise EvaluationPointError(
-                "log_potential is not available for a solution solved with breaks= (its "
-                "pointwise correction is known on the real line only through phi); solve "
-                "without breaks and a larger n")
-        return log_potential_series(self.coefficients, self.weight_data, v, ends)
+            out = out + self.remainder.log_potential(v, ends)
+        return out
 
 
 @dataclass(frozen=True, eq=False)
@@ -267,7 +272,9 @@ class Solution:
         Each interval's part is the exact transform of its Jacobi series (:mod:`sie.cauchy`:
         three-term recurrence, forward near the interval from F_0 in closed form, backward
         continued fraction away from it), so points 1e-12 from L or its ends keep full
-        accuracy.
+        accuracy.  With ``breaks``, the transform of the pointwise correction is added
+        (:mod:`sie.remainder`: through the inversion formula from the projection remainder,
+        graded toward Re z near the line).
 
         Raises
         ------
@@ -287,7 +294,8 @@ class Solution:
         dV/dx = -H[psi](x).  Per interval, with t = m + h u:
         V_j(x) = h [(log h / pi) int w phi du + (1/pi) int w phi log|v - u| du], v = (x-m)/h;
         the last integral in closed form through the Cauchy transform of a polynomial of
-        degree n (integration by parts, DLMF 18.9.16; :mod:`sie.cauchy`).
+        degree n (integration by parts, DLMF 18.9.16; :mod:`sie.cauchy`).  With ``breaks``,
+        the log potential of the pointwise correction is added (:mod:`sie.remainder`).
 
         Raises
         ------

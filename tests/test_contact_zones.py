@@ -238,3 +238,35 @@ def test_w_face_with_friction_against_the_independent_bem():
     ref = B.solve_bem(B.w_face, B.W_FACE, k.N11, k.N12 * mu_f, P, m=500, refine=32)
     assert len(ref.zones) == 2
     assert np.allclose([(z.c, z.d) for z in zs], ref.zones, rtol=0, atol=2e-5)
+
+
+# The cases a new user's trial found (issue "contact 2"); the old single-zone search returned a
+# zone next to X = 0 (penetrating elsewhere) or raised from its end search.
+TRIAL_FACES = {
+    # cylinder R = 100 with a protrusion 0.12 below the tip at X = 4: first touch there
+    "protrusion": (lambda X: X / 100 + 0.8 * (X - 4) * np.exp(-(X - 4) ** 2 / 0.5),
+                   lambda X: X * X / 200 - 0.2 * np.exp(-(X - 4) ** 2 / 0.5),
+                   (-np.inf, np.inf), 0.01, (3.8, 4.1)),
+    # the asymmetric bump X^2/200 + X^3/300 on the face [-1, 1]: one zone around X = 0
+    "asymmetric bump": (lambda X: X / 100 + X * X / 100, lambda X: X * X / 200 + X ** 3 / 300,
+                        (-1.0, 1.0), 1e-4, (-0.1, 0.1)),
+    # a narrow dip at X = 0.8 on a wide cylinder: first touch in the dip
+    "narrow dip": (lambda X: X / 100 + (X - 0.8) * np.exp(-(X - 0.8) ** 2 / 0.02),
+                   lambda X: X * X / 200 - 0.01 * np.exp(-(X - 0.8) ** 2 / 0.02),
+                   (-np.inf, np.inf), 0.01, (0.7, 0.9)),
+}
+
+
+@pytest.mark.parametrize("name", list(TRIAL_FACES))
+def test_trial_faces_touch_where_the_face_is_lowest(name):
+    """One zone where the face is lowest, p >= 0 in it, the gap >= 0 over the sampled face
+    (checked by follow_load), the load carried."""
+    dH, H, extent, P, where = TRIAL_FACES[name]
+    k = contact.surface_constants(MAT, 0.6)
+    face = Face(dH, extent=extent, height=H)
+    eq = ZoneEquations(slope=dH, rise=face.rise, breaks=(), a=k.N12 * 0.3, b=k.N11, load=P,
+                       n=24)
+    (s,) = follow_load(face, eq, [P])
+    (z,) = s.zones
+    assert where[0] < z.c < z.d < where[1]
+    assert abs(s.solution.integral() - P) <= 1e-12 * P

@@ -135,3 +135,23 @@ def test_log_potential_derivative_is_minus_the_hilbert_transform():
     xs = x1 + (x2 - x1) * (t + 1) / 2
     integral = (x2 - x1) / 2 * np.sum(w * sol.cauchy(xs))
     assert abs(dv + integral) <= 1e-13
+
+
+@pytest.mark.parametrize("x", [-1 + 1e-12, -1 + 1e-6, -1 + 1e-3, -0.5])
+def test_l0_next_to_a_singular_left_end(x):
+    """L_0(x) = (1/pi) int w log|x - u| du just inside a singular end (beta = -0.6944): mpmath
+    with 1 + u and |x - u| formed as products (no cancellation at 40 digits), to 2e-14
+    (the complement of betainc below 0: 2.7e-8 off at -1 + 1e-12 without it)."""
+    from sie.cauchy import Weight, l0
+    al = 0.6944
+    be = -al
+    with mp.workdps(40):
+        X = mp.mpf(x)
+        e = X + 1
+        left = mp.quad(lambda s: (2 - e * s) ** al * (e * s) ** be * mp.log(e * (1 - s)) * e,
+                       [0, 1])
+        right = mp.quad(lambda t: ((1 - X) * (1 - t)) ** al * (e + (1 - X) * t) ** be
+                        * mp.log((1 - X) * t) * (1 - X), [0, 1])
+        ref = float((left + right) / mp.pi)
+    got = float(l0(Weight.plain(al, be), np.array([x]))[0])
+    assert abs(got - ref) <= 2e-14 * max(1.0, abs(ref)), (got, ref)
