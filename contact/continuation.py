@@ -16,7 +16,7 @@ the ends from the previous step's solution.  Nothing about the profile far away 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -31,11 +31,13 @@ _MIN_RATIO = 1e-9      # the finest load step (relative) before giving up
 
 @dataclass(frozen=True)
 class ZoneState:
-    """The zones at one load, their index-1 loads and the solution of the equation on them."""
+    """The zones at one load, their index-1 loads, the solution of the equation on them, and
+    the Jacobian of the side conditions (reused by the next step of the same topology)."""
     load: float
     zones: tuple
     totals: tuple
     solution: object
+    jacobian: object = field(default=None, repr=False)
 
 
 def first_touch(face, eq: ZoneEquations, width=1e-3):
@@ -77,11 +79,11 @@ def follow_load(face, eq: ZoneEquations, loads):
     return out
 
 
-def _solve_at(face, eq, zones, totals, P):
+def _solve_at(face, eq, zones, totals, P, jacobian=None):
     lo, hi = face.extent
     e = replace(eq, load=P)
-    zs, ts, sol = e.newton(zones, totals, lo=lo, hi=hi)
-    return ZoneState(P, tuple(zs), tuple(ts), sol)
+    zs, ts, sol, J = e.solve_ends(zones, totals, lo=lo, hi=hi, jacobian=jacobian)
+    return ZoneState(P, tuple(zs), tuple(ts), sol, J)
 
 
 def _predict(state, P):
@@ -118,13 +120,15 @@ def _try_step(face, eq, state, P):
     zones = _clip(zones, lo, hi)
     if zones is None:
         return None
-    try:
-        new = _solve_at(face, eq, zones, totals, P)
-    except ContactLossError:
-        return None
-    if _violations(face, eq, new):
-        return None
-    return new
+    # the previous step's Jacobian first (Broyden keeps it current); a fresh one if that fails
+    for jac in ((state.jacobian, None) if state.jacobian is not None else (None,)):
+        try:
+            new = _solve_at(face, eq, zones, totals, P, jac)
+        except ContactLossError:
+            continue
+        if not _violations(face, eq, new):
+            return new
+    return None
 
 
 def _clip(zones, lo, hi):

@@ -38,6 +38,7 @@ from .errors import ContactLossError
 __all__ = ["Zone", "ZoneEquations", "FREE", "CORNER"]
 
 FREE, CORNER = "free", "corner"
+_FLOOR = 1e-12      # residuals below this that no step reduces are rounding: converged
 _SIE_END = {FREE: "bounded", CORNER: "singular"}
 
 
@@ -144,49 +145,52 @@ class ZoneEquations:
     # -- Newton ---------------------------------------------------------------------------------
     def newton(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf):
         """The ends (and index-1 loads) that satisfy the side conditions, from a start close
-        enough; finite-difference Jacobian, steps damped to keep the zones ordered and inside
-        [lo, hi].  Returns (zones, totals, solution)."""
+        enough.  Returns (zones, totals, solution); see :meth:`solve_ends`."""
+        return self.solve_ends(zones, totals, iterations=iterations, lo=lo, hi=hi)[:3]
+
+    def solve_ends(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf,
+                   jacobian=None):
+        """Newton's method on the side conditions with Broyden's rank-one updates of the
+        Jacobian (a finite-difference Jacobian to start, unless ``jacobian`` -- e.g. the
+        previous load step's -- is given, and again whenever an updated one stops reducing the
+        residual); steps damped to keep the zones ordered and inside [lo, hi].  Returns
+        (zones, totals, solution, Jacobian)."""
         totals = list(totals) if totals is not None else [
             self.load / len(zones) if z.kappa == 1 else None for z in zones]
         x = self.pack(zones, totals)
         F, sol = self.residual(zones, totals)
+        J = jacobian if jacobian is not None and jacobian.shape == (F.size, x.size) else None
+        fresh = False
+        scale = self._fd_steps(zones, totals) * 1e7          # the zone widths (and loads)
         for _ in range(iterations):
             if np.max(np.abs(F)) <= 32 * np.finfo(float).eps:
                 break
-            steps = self._fd_steps(zones, totals)
-            J = np.empty((F.size, x.size))
-            for k in range(x.size):
-                xk = x.copy()
-                xk[k] += steps[k]
-                zk, tk = self.unpack(xk, zones)
-                if not _ordered(zk, lo, hi):      # step the other way at a gap or an edge
-                    steps[k] = -steps[k]
-                    xk[k] = x[k] + steps[k]
-                    zk, tk = self.unpack(xk, zones)
-                    if not _ordered(zk, lo, hi):
-                        raise ContactLossError(
-                            f"the contact zones {[(z.c, z.d) for z in zones]} are too close to "
-                            "each other or to an edge of the face to vary their ends")
-                J[:, k] = (self.residual(zk, tk)[0] - F) / steps[k]
+            if J is None:
+                J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi), True
             try:
                 dx = -np.linalg.solve(J, F)
             except np.linalg.LinAlgError:
-                raise ContactLossError("the side conditions of the contact zones are singular "
-                                       f"at ends {[(z.c, z.d) for z in zones]}") from None
-            t = 1.0
-            while True:
-                xn = x + t * dx
-                zn, tn = self.unpack(xn, zones)
-                if _ordered(zn, lo, hi):
-                    Fn, soln = self.residual(zn, tn)
-                    if np.max(np.abs(Fn)) < np.max(np.abs(F)) or t < 1e-3:
-                        break
-                t *= 0.5
-                if t < 1e-6:
+                if fresh:
+                    raise ContactLossError("the side conditions of the contact zones are "
+                                           f"singular at ends {[(z.c, z.d) for z in zones]}") from None
+                J = None
+                continue
+            step = self._damped_step(x, dx, F, zones, lo, hi)
+            if step is None and np.max(np.abs(F)) <= _FLOOR:
+                break                       # at the rounding floor of the residuals
+            if step is None or np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)):
+                if not fresh:               # an updated Jacobian that stopped working
+                    J = None
+                    continue
+                if step is None:
                     raise ContactLossError(
                         "Newton's method for the contact ends made no progress at ends "
                         f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})")
-            small = np.max(np.abs(xn - x) / np.abs(steps)) * 1e-7 <= 1e-15
+            xn, zn, Fn, soln, tn = step
+            s = xn - x
+            J = J + np.outer(Fn - F - J @ s, s) / (s @ s)       # Broyden ("good") update
+            fresh = False
+            small = np.max(np.abs(s) / scale) <= 1e-15
             x, zones, totals, F, sol = xn, zn, tn, Fn, soln
             if small:
                 break
@@ -195,7 +199,39 @@ class ZoneEquations:
                 raise ContactLossError(
                     f"Newton's method for the contact ends did not converge (residual "
                     f"{np.max(np.abs(F)):.3g} after {iterations} iterations)")
-        return zones, totals, sol
+        return zones, totals, sol, J
+
+    def _fd_jacobian(self, x, F, zones, totals, lo, hi):
+        steps = self._fd_steps(zones, totals)
+        J = np.empty((F.size, x.size))
+        for k in range(x.size):
+            xk = x.copy()
+            xk[k] += steps[k]
+            zk, tk = self.unpack(xk, zones)
+            if not _ordered(zk, lo, hi):      # step the other way at a gap or an edge
+                steps[k] = -steps[k]
+                xk[k] = x[k] + steps[k]
+                zk, tk = self.unpack(xk, zones)
+                if not _ordered(zk, lo, hi):
+                    raise ContactLossError(
+                        f"the contact zones {[(z.c, z.d) for z in zones]} are too close to "
+                        "each other or to an edge of the face to vary their ends")
+            J[:, k] = (self.residual(zk, tk)[0] - F) / steps[k]
+        return J
+
+    def _damped_step(self, x, dx, F, zones, lo, hi):
+        """x + t dx for the largest t = 1, 1/2, ... that keeps the zones ordered and reduces
+        max|F| (down to t = 1e-3); None if none does."""
+        t = 1.0
+        while t >= 1e-3:
+            xn = x + t * dx
+            zn, tn = self.unpack(xn, zones)
+            if _ordered(zn, lo, hi):
+                Fn, soln = self.residual(zn, tn)
+                if np.max(np.abs(Fn)) < np.max(np.abs(F)):
+                    return xn, zn, Fn, soln, tn
+            t *= 0.5
+        return None
 
     def _fd_steps(self, zones, totals):
         out = []
