@@ -160,14 +160,24 @@ def _violations(face, eq, state):
 
 
 def _gap_samples(face, eq, state, m=400):
-    """The gap g = H - v - v0 at points of the face outside the zones (g = 0 at the first
-    zone's left end): g(X) - g(x_ref) = H(X) - H(x_ref) + N11 (V(X) - V(x_ref))."""
+    """The gap g = H - v - v0 at points of the face outside the zones, from g(c_1) = 0:
+    v' = N12 mu_f p + N11 Hc[p], so across the zones left of X the friction term adds
+    N12 mu_f times their loads, and
+        g(X) = H(X) - H(c_1) - N12 mu_f int_{c_1}^X p + N11 (V(X) - V(c_1))."""
     X = face.sample_points(state.zones, m)
     if X.size == 0:
         return X, X
-    ref = state.zones[0].c if state.zones[0].left == FREE else state.zones[0].d
-    V = state.solution.log_potential(np.concatenate([[ref], X]))
+    zones, sol = state.zones, state.solution
+    ref = zones[0].c
+    V = sol.log_potential(np.concatenate([[ref], X]))
     g = face.rise_from(ref, X) + eq.b * (V[1:] - V[0])
+    if eq.a != 0.0:
+        loads = [sol.integral(interval=j) for j in range(len(zones))] if len(zones) > 1 \
+            else [sol.integral()]
+        passed = np.zeros(X.shape)
+        for z, load in zip(zones, loads):
+            passed += np.where(X >= z.d, load, 0.0)
+        g = g - eq.a * passed
     return g, X
 
 

@@ -86,14 +86,16 @@ class Face:
             j = k
             while j + 1 < m and low[j + 1]:
                 j += 1
-            if j > k:
+            run_slope = np.max(np.abs(self.slope(X[k:j + 1]))) if j > k else np.inf
+            top_slope = max(float(np.max(np.abs(self.slope(X)))), np.finfo(float).tiny)
+            if j > k and run_slope <= 1e-14 * top_slope:       # a flat stretch (H' = 0)
                 out.append(((X[k], X[j]), "flat"))
             elif k == 0 and math.isfinite(self.extent[0]):
                 out.append((X[0], "left-edge"))
             elif k == m - 1 and math.isfinite(self.extent[1]):
                 out.append((X[-1], "right-edge"))
             else:
-                lo_, hi_ = X[max(k - 1, 0)], X[min(k + 1, m - 1)]
+                lo_, hi_ = X[max(k - 1, 0)], X[min(j + 1, m - 1)]
                 r = minimize_scalar(lambda x: self.rise(a, x), bounds=(lo_, hi_),
                                     method="bounded", options={"xatol": 1e-14 * max(1.0, abs(lo_))})
                 out.append((float(r.x), "interior"))

@@ -77,6 +77,25 @@ class Punch:
             raise ProfileCallableError(f"the punch slope returned a non-finite value at X = {bad!r}")
         return out
 
+    def _height(self, X):
+        """H(X), the height of the face (None: not known in closed form; the contact search
+        integrates the slope)."""
+        return None
+
+    @property
+    def extent(self) -> tuple:
+        """(X_min, X_max) of the face: its sharp corners, -inf/+inf where it has none."""
+        left, right = self.corners
+        return (-math.inf if left is None else float(left),
+                math.inf if right is None else float(right))
+
+    def as_face(self):
+        """The face as the multi-zone contact search sees it (:class:`contact.face.Face`)."""
+        from .face import Face
+        has_height = type(self)._height is not Punch._height
+        return Face(self.slope, extent=self.extent, breaks=self.breaks,
+                    height=self._height if has_height else None)
+
     @property
     def ends(self) -> tuple:
         """("singular" | "bounded") at the left and right contact ends."""
@@ -101,6 +120,9 @@ class FlatPunch(Punch):
     def _slope(self, X):
         return np.zeros_like(X)
 
+    def _height(self, X):
+        return np.zeros_like(np.asarray(X, dtype=float))
+
     def __repr__(self):
         return f"FlatPunch(half_width={self.half_width!r})"
 
@@ -120,6 +142,9 @@ class TriangularPunch(Punch):
     def _slope(self, X):
         return np.full_like(X, self.m0)
 
+    def _height(self, X):
+        return self.m0 * np.asarray(X, dtype=float)
+
     def __repr__(self):
         return f"TriangularPunch(slope={self.m0!r})"
 
@@ -135,6 +160,10 @@ class _ParabolicFace(Punch):
 
     def _slope(self, X):
         return X / self.radius
+
+    def _height(self, X):
+        X = np.asarray(X, dtype=float)
+        return X * X / (2.0 * self.radius)
 
     def __repr__(self):
         return f"{type(self).__name__}(radius={self.radius!r})"

@@ -98,8 +98,9 @@ class Weight:
     def m(self) -> int:
         return int(round(self.alpha + self.beta))
 
-    @property
+    @functools.cached_property
     def mu0(self) -> float:
+        """int w (exact; computed once per weight)."""
         return jacobi_moment_shifted(self.alpha_p1, self.beta_p1)
 
     @classmethod
@@ -321,6 +322,7 @@ def _moments(wt: Weight, count: int):
     return M
 
 
+@functools.lru_cache(maxsize=64)
 def _l0_at_one(wt: Weight):
     """L_0(1) = (1/pi) int w log(1 - u) du = (mu_0/pi)(log 2 + psi(alpha+1) - psi(alpha+beta+2))."""
     return wt.mu0 / math.pi * (math.log(2.0) + sp.digamma(wt.alpha_p1)

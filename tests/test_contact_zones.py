@@ -270,3 +270,33 @@ def test_trial_faces_touch_where_the_face_is_lowest(name):
     (z,) = s.zones
     assert where[0] < z.c < z.d < where[1]
     assert abs(s.solution.integral() - P) <= 1e-12 * P
+
+
+PAPER_PUNCHES = {
+    "flat": contact.FlatPunch(half_width=0.5),
+    "triangular": contact.TriangularPunch(slope=0.1),
+    "parabolic": contact.ParabolicPunch(radius=10.0),
+    "cylindrical": contact.CylindricalPunch(radius=100.0),
+}
+
+
+@pytest.mark.parametrize("name", list(PAPER_PUNCHES))
+@pytest.mark.parametrize("friction,direction", [(0.0, -1), (0.3, -1), (0.3, 1)])
+def test_paper_punches_from_first_touch(name, friction, direction):
+    """Punch.as_face() and the load curve from first touch give the single-zone solver's
+    contact (ends and pressure) for the four punches of the paper: the flat face touches
+    everywhere at once (two corners), the wedge and the parabola first at their corner, the
+    cylinder at its lowest point."""
+    punch, P, speed = PAPER_PUNCHES[name], 0.02, 0.6
+    ref = contact.solve(MAT, punch, load=P, speed=speed, friction=friction, direction=direction)
+    k = contact.surface_constants(MAT, speed)
+    face = punch.as_face()
+    mu_f = -direction * friction
+    eq = ZoneEquations(slope=face.slope, rise=face.rise, breaks=face.breaks,
+                       a=k.N12 * mu_f if mu_f else 0.0, b=k.N11, load=P, n=8)
+    (s,) = follow_load(face, eq, [P])
+    (z,) = s.zones
+    w = ref.ends[1] - ref.ends[0]
+    assert abs(z.c - ref.ends[0]) <= 1e-12 * w and abs(z.d - ref.ends[1]) <= 1e-12 * w
+    X = ref.ends[0] + w * np.linspace(0.05, 0.95, 7)
+    assert np.allclose(s.solution(X), ref.pressure(X), rtol=1e-10, atol=0)
