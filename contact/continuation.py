@@ -71,7 +71,22 @@ def follow_load(face, eq: ZoneEquations, loads):
     """ZoneState at each load of ``loads`` (ascending), by continuation from first touch."""
     zones, load0 = first_touch(face, eq)
     loads = [float(P) for P in loads]
-    state = _solve_at(face, eq, zones, None, min(load0, loads[0]))
+    totals0 = tuple(None if z.kappa != 1 else load0 / len(zones) for z in zones)
+    if loads[0] > load0:
+        # straight to the first load when first touch's topology holds there (the common
+        # case: one zone that grows), without solving at the first-touch load itself
+        direct = _try_step(face, eq, ZoneState(load0, tuple(zones), totals0, None), loads[0])
+        if direct is not None:
+            out = [direct]
+            for P in loads[1:]:
+                out.append(_advance(face, eq, out[-1], P))
+            return out
+    state = _solve_at(face, eq, zones, None, load0)
+    if loads[0] < load0:
+        # below the first-touch load the zones shrink about the same points (the topology
+        # of first touch holds at any smaller load)
+        z, t = _predict(state, loads[0])
+        state = _solve_at(face, eq, z, t, loads[0])
     out = []
     for P in loads:
         state = _advance(face, eq, state, P)
@@ -103,6 +118,10 @@ def _predict(state, P):
 
 def _advance(face, eq, state, P):
     """From ``state`` to load P, stepping and handling events."""
+    if state.load < P:
+        new = _try_step(face, eq, state, P)         # one step when the topology holds
+        if new is not None:
+            return new
     while state.load < P:
         target = min(P, state.load * _GROWTH)
         new = _try_step(face, eq, state, target)
@@ -148,15 +167,30 @@ def _violations(face, eq, state):
     """True when the state breaks a condition that needs another topology: p < 0 inside a
     zone, the gap negative outside the zones."""
     sol = state.solution
+    tol = _resolution(sol)
     for j, z in enumerate(state.zones):
         X = z.c + z.width * (0.5 + 0.5 * np.cos(np.pi * (np.arange(64) + 0.5) / 64))
-        if np.min(sol(X)) < -1e-9 * np.max(np.abs(sol(X))):
+        if np.min(sol(X)) < -tol * np.max(np.abs(sol(X))):
             return True
+    if face.convex and len(state.zones) == 1:
+        return False                     # a nondecreasing slope: the gap opens by itself
     g, X = _gap_samples(face, eq, state)
     if g.size == 0:                      # the zones cover the face
         return False
     scale = face.rise_scale(state)
-    return bool(np.min(g) < -1e-9 * scale)
+    return bool(np.min(g) < -tol * scale)
+
+
+def _resolution(sol):
+    """What the checks forgive: 1e-9, or the size of the last two Jacobi coefficients
+    relative to the largest (times 10) when n does not resolve p (a kink without breaks at a
+    small n: wiggles of that size are truncation, not a lost contact)."""
+    tails = []
+    for c in (sol.coefficients if np.ndim(sol.kappa) else (sol.coefficients,)):
+        c = np.abs(np.asarray(c))
+        if c.size > 2 and c.max() > 0:
+            tails.append(10.0 * (c[-1] + c[-2]) / c.max())
+    return max([1e-9] + tails)
 
 
 def _gap_samples(face, eq, state, m=400):

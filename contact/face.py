@@ -6,22 +6,32 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import minimize_scalar
+from scipy.optimize import brentq
+
+from .errors import PunchGeometryError
 
 __all__ = ["Face"]
 
 _GL = np.polynomial.legendre.leggauss(24)
 
 
+def _end_between(breaks, a, b, default):
+    inside = [x for x in breaks if a <= x <= b]
+    return inside[0] if inside else default
+
+
 class Face:
     """H'(X) (``slope``), optionally H(X) (``height``), on ``extent`` = (X_min, X_max)
-    (infinite ends allowed), with ``breaks`` where H' or a derivative jumps."""
+    (infinite ends allowed), with ``breaks`` where H' or a derivative jumps; ``convex``:
+    H' is nondecreasing (stated by the punch, not sampled)."""
 
-    def __init__(self, slope, extent=(-math.inf, math.inf), breaks=(), height=None):
+    def __init__(self, slope, extent=(-math.inf, math.inf), breaks=(), height=None,
+                 convex=False):
         self.slope = slope
         self.extent = (float(extent[0]), float(extent[1]))
         self.breaks = tuple(sorted(float(b) for b in breaks))
         self.height = height
+        self.convex = bool(convex)       # H' nondecreasing: one zone's gap opens by itself
 
     # -- heights ---------------------------------------------------------------------------
     def rise(self, x0, x1):
@@ -69,38 +79,52 @@ class Face:
         return a, b
 
     def lowest_points(self, m=2001):
-        """[(X, kind)]: the global minima of H on the face (within 1e-12 of its range), each
-        an interior point ("interior"), an edge ("left-edge", "right-edge") or a flat stretch
-        ((c, d), "flat")."""
+        """[(X, kind)]: the global minima of H on the face, each an interior point
+        ("interior"), an edge ("left-edge", "right-edge") or a flat stretch ((c, d), "flat").
+
+        Candidates come from the slope at m samples of the search window (exact where H
+        itself would be a quadrature): a sign change from - to + (polished by a bounded
+        minimisation), a run of samples where H' = 0 exactly, an edge where H rises inward;
+        the lowest of them (within 1e-9 of the range of H over them) are returned."""
         a, b = self.search_window()
         X = np.linspace(a, b, m)
-        H = self.rise_from(a, X)
-        span = max(float(np.max(H) - np.min(H)), np.finfo(float).tiny)
-        low = H <= np.min(H) + 1e-12 * span
-        out = []
-        k = 0
-        while k < m:
-            if not low[k]:
-                k += 1
-                continue
-            j = k
-            while j + 1 < m and low[j + 1]:
-                j += 1
-            run_slope = np.max(np.abs(self.slope(X[k:j + 1]))) if j > k else np.inf
-            top_slope = max(float(np.max(np.abs(self.slope(X)))), np.finfo(float).tiny)
-            if j > k and run_slope <= 1e-14 * top_slope:       # a flat stretch (H' = 0)
-                out.append(((X[k], X[j]), "flat"))
-            elif k == 0 and math.isfinite(self.extent[0]):
-                out.append((X[0], "left-edge"))
-            elif k == m - 1 and math.isfinite(self.extent[1]):
-                out.append((X[-1], "right-edge"))
+        dH = self.slope(X)
+        top = max(float(np.max(np.abs(dH))), np.finfo(float).tiny)
+        zero = np.abs(dH) <= 1e-14 * top
+        cands = []
+        if math.isfinite(self.extent[0]) and (dH[0] > 0 or zero[0]) and not zero[:2].all():
+            cands.append((X[0], "left-edge"))
+        if math.isfinite(self.extent[1]) and (dH[-1] < 0 or zero[-1]) and not zero[-2:].all():
+            cands.append((X[-1], "right-edge"))
+        # flat stretches: runs of two or more exact zeros of H', falling before and rising after
+        z = np.concatenate([[0], zero.astype(np.int8), [0]])
+        starts = np.flatnonzero(np.diff(z) == 1)
+        stops = np.flatnonzero(np.diff(z) == -1) - 1
+        for k, j in zip(starts, stops):
+            if j > k and (k == 0 or dH[k - 1] < 0) and (j == m - 1 or dH[j + 1] > 0):
+                c = X[k] if k == 0 else _end_between(self.breaks, X[k - 1], X[k], X[k - 1])
+                d = X[j] if j == m - 1 else _end_between(self.breaks, X[j], X[j + 1], X[j + 1])
+                cands.append(((c, d), "flat"))
+        # interior minima: H' from - to + (a single zero sample counts as the crossing)
+        runs = np.zeros(m, dtype=bool)
+        for k, j in zip(starts, stops):
+            runs[k:j + 1] = j > k
+        for k in np.flatnonzero((dH[:-1] < 0) & (dH[1:] >= 0) & ~runs[1:]):
+            if dH[k + 1] > 0:               # the root of H' (a sign change: Brent)
+                x0 = brentq(lambda x: float(self.slope(np.array([x]))[0]), X[k], X[k + 1],
+                            xtol=1e-15 * max(1.0, abs(X[k])), rtol=4 * np.finfo(float).eps)
             else:
-                lo_, hi_ = X[max(k - 1, 0)], X[min(j + 1, m - 1)]
-                r = minimize_scalar(lambda x: self.rise(a, x), bounds=(lo_, hi_),
-                                    method="bounded", options={"xatol": 1e-14 * max(1.0, abs(lo_))})
-                out.append((float(r.x), "interior"))
-            k = j + 1
-        return out
+                x0 = X[k + 1]
+            cands.append((float(x0), "interior"))
+        if not cands:
+            raise PunchGeometryError(
+                f"the face has no lowest point in [{a:.6g}, {b:.6g}] (its height falls toward "
+                "an unbounded side): give the face's extent (face=) so that contact has an edge")
+        where = [c[0][0] if c[1] == "flat" else c[0] for c in cands]
+        heights = np.array([self.rise(a, float(x)) for x in where])
+        span = max(float(np.ptp(self.rise_from(a, X[:: max(1, m // 64)]))), np.finfo(float).tiny)
+        low = heights <= heights.min() + 1e-9 * span
+        return [c for c, keep in zip(cands, low) if keep]
 
     # -- the gap -----------------------------------------------------------------------------
     def sample_points(self, zones, m):

@@ -94,7 +94,7 @@ class Punch:
         from .face import Face
         has_height = type(self)._height is not Punch._height
         return Face(self.slope, extent=self.extent, breaks=self.breaks,
-                    height=self._height if has_height else None)
+                    height=self._height if has_height else None, convex=self.convex)
 
     @property
     def ends(self) -> tuple:

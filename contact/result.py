@@ -13,7 +13,20 @@ from .constants import SurfaceConstants
 from .errors import ContactInputError
 from .punches import Punch
 
-__all__ = ["ContactResult"]
+__all__ = ["ContactResult", "ContactZone"]
+
+
+@dataclass(frozen=True)
+class ContactZone:
+    """One contact zone: its ends, their kinds ("free": p -> 0, found from the load;
+    "corner": an edge of the face, p singular), the exponents of p ~ (x_right - X)^alpha and
+    (X - x_left)^beta, the index, and the load it carries."""
+    ends: tuple
+    kinds: tuple
+    alpha: float
+    beta: float
+    kappa: int
+    load: float
 
 
 @dataclass(eq=False)
@@ -22,32 +35,33 @@ class ContactResult:
 
     Attributes
     ----------
+    zones : tuple of ContactZone
+        The contact zones, left to right (one for the paper's punches).
     ends : (float, float)
-        Contact ends (x_left, x_right).
+        Contact ends (x_left, x_right) of the one zone (an error when there are several:
+        use ``zones``).
     alpha, beta : float
-        Exponents of p ~ (x_right - X)^alpha at the right end and (X - x_left)^beta at the left.
+        Exponents of p ~ (x_right - X)^alpha at the right end and (X - x_left)^beta at the left
+        (tuples over the zones when there are several).
     kappa : int
-        Index -(alpha + beta).
+        Index -(alpha + beta) (a tuple when there are several zones).
     n : int
-        Jacobi coefficients used.
+        Jacobi coefficients used per zone.
     residual : float
-        max |(dominant operator applied to p) - v'| at 64 check points inside the contact,
-        relative to max |v'| (or to the operator's size when v' = 0).
+        max |(dominant operator applied to p) - v'| at 64 check points per zone, relative to
+        max |v'| (or to the operator's size when v' = 0).
     load_check : float
         |int p dX - P| / P.
     sif : dict
-        Stress intensity factors at singular (corner) ends, keyed "left"/"right".  Two
-        corners (flat type, Zhou et al. 2014 eqs. (5.11)-(5.12)):
+        Stress intensity factors at singular (corner) ends, keyed "left"/"right" (one zone).
+        Two corners (flat type, Zhou et al. 2014 eqs. (5.11)-(5.12)):
         K_right = lim (x_r - X)^(-alpha) p(X) / 2^beta, K_left = lim (X - x_l)^(-beta) p(X) / 2^alpha.
         One corner (eqs. (5.23), (5.33)): K = lim |X - x_corner|^(-e) p(X), e its exponent.
     constants : SurfaceConstants
     mu_f : float
         Signed friction coefficient -direction * friction.
     """
-    ends: tuple
-    alpha: float
-    beta: float
-    kappa: int
+    zones: tuple
     n: int
     load_check: float
     constants: SurfaceConstants
@@ -62,9 +76,37 @@ class ContactResult:
     _sif: dict | None = field(default=None, repr=False)
     _residual: float | None = field(default=None, repr=False)
 
+    # -- the zones ---------------------------------------------------------------
+    def _one(self, what):
+        if len(self.zones) != 1:
+            raise ContactInputError(
+                f"{what} is defined for one contact zone; this contact has {len(self.zones)} "
+                f"zones {[z.ends for z in self.zones]}: use result.zones")
+        return self.zones[0]
+
+    @property
+    def ends(self):
+        return self._one("ends").ends
+
+    def _per_zone(self, name):
+        vals = tuple(getattr(z, name) for z in self.zones)
+        return vals[0] if len(vals) == 1 else vals
+
+    @property
+    def alpha(self):
+        return self._per_zone("alpha")
+
+    @property
+    def beta(self):
+        return self._per_zone("beta")
+
+    @property
+    def kappa(self):
+        return self._per_zone("kappa")
+
     @property
     def residual(self) -> float:
-        """max |N12 mu_f p + N11 Hc[p] - v'| at 64 Chebyshev points of the contact, relative
+        """max |N12 mu_f p + N11 Hc[p] - v'| at 64 Chebyshev points of each zone, relative
         to max |v'| (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
         if self._residual is None:
             self._residual = _residual_of(self)
@@ -74,38 +116,41 @@ class ContactResult:
     def sif(self) -> dict:
         """Stress intensity factors (see the class docstring), computed on first access."""
         if self._sif is None:
-            self._sif = _sif(self.solution, self.punch, self.half_width)
+            self._one("sif")
+            self._sif = _sif(self.solution, self.zones[0])
         return self._sif
 
     # geometry ------------------------------------------------------------
     @property
     def half_width(self):
-        return 0.5 * (self.ends[1] - self.ends[0])
+        e = self.ends
+        return 0.5 * (e[1] - e[0])
 
     @property
     def center(self):
-        return 0.5 * (self.ends[1] + self.ends[0])
+        e = self.ends
+        return 0.5 * (e[1] + e[0])
 
-    def _s(self, X):
+    def _X(self, X):
         X = np.asarray(X, dtype=float)
         if not np.all(np.isfinite(X)):
             raise ContactInputError("X must be finite real numbers")
-        return (X - self.center) / self.half_width
+        return X
 
-    def _check_not_singular_end(self, X, s, what):
-        for end, expo in ((1.0, self.alpha), (-1.0, self.beta)):
-            if expo < 0 and np.any(s == end):
-                raise ContactInputError(
-                    f"{what} is infinite at the singular contact end X = "
-                    f"{self.ends[0] if end < 0 else self.ends[1]!r} (exponent {expo:.6g}); "
-                    "evaluate at points off it")
+    def _check_not_singular_end(self, X, what):
+        for z in self.zones:
+            for end, expo in ((z.ends[1], z.alpha), (z.ends[0], z.beta)):
+                if expo < 0 and np.any(X == end):
+                    raise ContactInputError(
+                        f"{what} is infinite at the singular contact end X = {end!r} "
+                        f"(exponent {expo:.6g}); evaluate at points off it")
 
     # fields --------------------------------------------------------------
     def pressure(self, X):
         """Contact pressure p(X) >= 0 (compressive), zero outside the contact."""
-        s = self._s(X)
-        self._check_not_singular_end(X, s, "the pressure")
-        return self.solution(s)
+        X = self._X(X)
+        self._check_not_singular_end(X, "the pressure")
+        return self.solution(X)
 
     def shear(self, X):
         """Friction traction q(X) = mu_f p(X) (tau_XY(X, 0) = -q; errata conventions)."""
@@ -113,13 +158,13 @@ class ContactResult:
 
     def hilbert_pressure(self, X):
         """Hc[p](X) = (1/pi) PV int p(u)/(u - X) du at any real X (not at a singular end)."""
-        s = self._s(X)
-        self._check_not_singular_end(X, s, "Hc[p]")
-        s = np.array(s, dtype=float, copy=True)
+        X = np.array(self._X(X), dtype=float, copy=True)
+        self._check_not_singular_end(X, "Hc[p]")
         # bounded ends: Hc[p] is continuous there; take the limit from inside
-        s[s == 1.0] = np.nextafter(1.0, 0.0)
-        s[s == -1.0] = np.nextafter(-1.0, 0.0)
-        return self.solution.cauchy(s)
+        for z in self.zones:
+            X[X == z.ends[1]] = np.nextafter(z.ends[1], z.ends[0])
+            X[X == z.ends[0]] = np.nextafter(z.ends[0], z.ends[1])
+        return self.solution.cauchy(X)
 
     def sigma_xx(self, X):
         """Surface in-plane stress sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p] at any real X
@@ -130,31 +175,31 @@ class ContactResult:
         return self.constants.N21 * p + self.constants.N22 * self.mu_f * self.hilbert_pressure(X)
 
 
-
 class _ClosedFormContactResult(ContactResult):
     """ContactResult whose fields come from the corrected closed forms
     (:mod:`contact.closed_form`); same interface as the numeric result."""
 
     def pressure(self, X):
-        s = self._s(X)
-        self._check_not_singular_end(X, s, "the pressure")
-        return self.solution.pressure(np.asarray(X, dtype=float))
+        X = self._X(X)
+        self._check_not_singular_end(X, "the pressure")
+        return self.solution.pressure(X)
 
     def hilbert_pressure(self, X):
-        s = self._s(X)
-        self._check_not_singular_end(X, s, "Hc[p]")
-        return self.solution.hilbert_pressure(np.asarray(X, dtype=float))
+        X = self._X(X)
+        self._check_not_singular_end(X, "Hc[p]")
+        return self.solution.hilbert_pressure(X)
 
 
 def _residual_of(res):
-    """Relative max residual of the dominant equation at 64 Chebyshev points."""
+    """Relative max residual of the dominant equation at 64 Chebyshev points per zone."""
     if res.method == "closed_form":
         return 0.0
-    sol = res.solution
-    s = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
-    f = res.punch.slope(res.half_width * s + res.center)
-    psi = sol(s)
-    hc = res.constants.N11 * sol.cauchy(s)
+    u = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
+    X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0]) * u
+                        for z in res.zones])
+    f = res.punch.slope(X)
+    psi = res.solution(X)
+    hc = res.constants.N11 * res.solution.cauchy(X)
     lhs = res.constants.N12 * res.mu_f * psi + hc
     # the scale of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its
     # rounding is eps |N11| max|p|
@@ -163,14 +208,17 @@ def _residual_of(res):
     return float(np.max(np.abs(lhs - f)) / scale)
 
 
-def _sif(sol, punch, h):
-    e = punch.ends
+def _sif(sol, zone):
+    """SIFs of one zone from phi at its local ends (h its half-width; Zhou et al. 2014,
+    eqs. (5.11)-(5.12), (5.23), (5.33))."""
+    h = 0.5 * (zone.ends[1] - zone.ends[0])
+    kinds = zone.kinds
     out = {}
-    if e == ("singular", "singular"):
-        out["right"] = h ** (-sol.alpha) * sol.endpoint_value(1)
-        out["left"] = h ** (-sol.beta) * sol.endpoint_value(-1)
-    elif e == ("singular", "bounded"):
-        out["left"] = 2.0 ** sol.alpha * h ** (-sol.beta) * sol.endpoint_value(-1)
-    elif e == ("bounded", "singular"):
-        out["right"] = 2.0 ** sol.beta * h ** (-sol.alpha) * sol.endpoint_value(1)
+    if kinds == ("corner", "corner"):
+        out["right"] = h ** (-zone.alpha) * sol.endpoint_value(1)
+        out["left"] = h ** (-zone.beta) * sol.endpoint_value(-1)
+    elif kinds == ("corner", "free"):
+        out["left"] = 2.0 ** zone.alpha * h ** (-zone.beta) * sol.endpoint_value(-1)
+    elif kinds == ("free", "corner"):
+        out["right"] = 2.0 ** zone.beta * h ** (-zone.alpha) * sol.endpoint_value(1)
     return out

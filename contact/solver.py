@@ -16,17 +16,18 @@ is the side condition.  Index 0 (one corner): the free end is the root of load(L
 from __future__ import annotations
 
 import warnings
+from dataclasses import replace
 
 import numpy as np
 
-from .checks import _check_gap, _check_positive_pressure
 from .constants import SurfaceConstants, surface_constants
-from .ends import _ends_for, _ends_hold, _Problem
+from .continuation import ZoneState, follow_load
 from .errors import (ContactInputError, DirectionError, FrictionError, LoadError,
                      check_finite)
 from .material import Orthotropic
 from .punches import Punch
-from .result import ContactResult, _ClosedFormContactResult
+from .result import ContactResult, ContactZone, _ClosedFormContactResult
+from .zones import ZoneEquations
 
 __all__ = ["solve", "ContactResult", "contact_length"]
 
@@ -118,20 +119,34 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         n_use, adaptive = punch.slope_degree + 4, False
     else:
         n_use, adaptive = (n if n is not None else _N_DEFAULT), n is None
-    prob = _Problem(punch, a, const.N11, load, n_use)
-    ends, sol = _solve_adaptive(prob, adaptive, tol)
-    xl, xr = ends
-    h = 0.5 * (xr - xl)
-    _check_positive_pressure(sol, xl, xr, punch.breaks)
+    face = punch.as_face()
+    eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
+                       b=const.N11, load=load, n=n_use)
+    state = _solve_adaptive(face, eq, load, adaptive, tol, punch)
+    sol = state.solution
+    zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
+    integral = sum(z.load for z in zones)
     res = ContactResult(
-        ends=(float(xl), float(xr)), alpha=sol.alpha, beta=sol.beta, kappa=sol.kappa, n=sol.n,
-        load_check=abs(h * sol.integral() - load) / load,
+        zones=zones, n=_basis_size(state), load_check=abs(integral - load) / load,
         constants=const, load=load, speed=float(speed),
         friction=friction, direction=direction, mu_f=mu_f, punch=punch, method="numeric",
         solution=sol)
-    if punch.kappa < 1 and not punch.convex:
-        _check_gap(res, prob)
     return res
+
+
+def _basis_size(state):
+    n = state.solution.n
+    return int(n if np.ndim(n) == 0 else max(n))
+
+
+def _zone_info(z, j, sol):
+    multi = np.ndim(sol.alpha) > 0
+    alpha = sol.alpha[j] if multi else sol.alpha
+    beta = sol.beta[j] if multi else sol.beta
+    kappa = sol.kappa[j] if multi else sol.kappa
+    load = sol.integral(interval=j) if multi else sol.integral()
+    return ContactZone((float(z.c), float(z.d)), (z.left, z.right), float(alpha), float(beta),
+                       int(kappa), float(load))
 
 
 def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
@@ -150,43 +165,50 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
         raise ContactInputError(
             f'method="closed_form" exists only for FlatPunch, TriangularPunch, ParabolicPunch and '
             f'CylindricalPunch; use method="numeric" for {type(punch).__name__}')
+    kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
+    zone = ContactZone(tuple(float(x) for x in c.ends), kinds, float(c.alpha), float(c.beta),
+                       int(c.kappa), float(load))
     return _ClosedFormContactResult(
-        ends=tuple(float(x) for x in c.ends), alpha=c.alpha, beta=c.beta, kappa=c.kappa, n=2,
+        zones=(zone,), n=2,
         load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
         method="closed_form", solution=c, _sif=dict(c.sif))
 
 
-def _solve_adaptive(prob, adaptive, tol):
-    """Find the ends and the solution; with ``adaptive``, double n until the pressure at
-    check points and the ends agree between n and 2n to ``tol``."""
-    ends = _ends_for(prob)
-    sol = prob.solve_on(*ends, check_residual=not adaptive)
+def _solve_adaptive(face, eq, load, adaptive, tol, punch):
+    """The zones at ``load`` from first touch (:func:`contact.continuation.follow_load`);
+    with ``adaptive``, n is doubled (Newton from the previous zones) until the ends and the
+    pressure at check points agree between n and 2n to ``tol``."""
+    (state,) = follow_load(face, eq, [load])
     if not adaptive:
-        return ends, sol
-    s = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
+        return state
+    u = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
+    lo, hi = face.extent
     while True:
-        prob2 = _Problem(prob.punch, prob.a, prob.b, prob.load, 2 * prob.n)
-        ends2 = ends if _ends_hold(prob2, ends, tol) else _ends_for(prob2, hint=ends)
-        sol2 = prob2.solve_on(*ends2, check_residual=False)
-        width = ends2[1] - ends2[0]
-        d_ends = max(abs(ends2[0] - ends[0]), abs(ends2[1] - ends[1])) / width
-        # compare phi on the common normalised interval: p differs by the end shift anyway
-        p1, p2 = sol.phi(s), sol2.phi(s)
+        eq2 = replace(eq, n=2 * eq.n)
+        zs, ts, sol2, J = eq2.solve_ends(list(state.zones), list(state.totals), lo=lo, hi=hi,
+                                         jacobian=state.jacobian)
+        width = zs[-1].d - zs[0].c
+        d_ends = max(max(abs(a.c - b.c), abs(a.d - b.d)) for a, b in zip(zs, state.zones)) / width
+        X = np.concatenate([0.5 * (z.c + z.d) + 0.5 * (z.d - z.c) * u for z in zs])
+        Xo = np.concatenate([0.5 * (z.c + z.d) + 0.5 * (z.d - z.c) * u for z in state.zones])
+        # compare phi-like values on each zone's own normalised points
+        p1, p2 = state.solution(Xo), sol2(X)
         d_p = np.max(np.abs(p2 - p1)) / max(np.max(np.abs(p2)), np.finfo(float).tiny)
-        if max(d_ends, d_p) <= tol or 2 * prob2.n > _N_MAX:
+        new = ZoneState(load, tuple(zs), tuple(ts), sol2, J)
+        if max(d_ends, d_p) <= tol or 2 * eq2.n > _N_MAX:
             if max(d_ends, d_p) > tol:
                 hint = ("; if the slope varies on a length scale much shorter than the contact, "
                         "pass a larger n= (the error falls geometrically, at a rate set by that "
                         "scale)")
-                if not prob.punch.breaks:
+                if not punch.breaks:
                     hint += ("; if it has a kink or a jump in a derivative, pass its X positions "
                              "as breaks= (spectral instead of algebraic convergence)")
-                warnings.warn(f"contact.solve: n = {prob2.n} reached with a change of "
+                warnings.warn(f"contact.solve: n = {eq2.n} reached with a change of "
                               f"{max(d_ends, d_p):.2g} (> tol = {tol:.2g}) between n and 2n{hint}",
                               RuntimeWarning, stacklevel=3)
-            return ends2, sol2
-        prob, ends, sol = prob2, ends2, sol2
+            return new
+        eq, state = eq2, new
 
 
 def contact_length(material, punch, *, load, speed, friction=0.0, direction=-1):

@@ -315,20 +315,29 @@ def test_custom_solutions_are_physical(name):
 # ------------------------------------------------------------------------------------------
 # 5. ContactLossError
 # ------------------------------------------------------------------------------------------
-def test_contact_loss_two_zones():
-    """The W profile under a small load would touch in two separate zones."""
-    with pytest.raises(contact.ContactLossError, match="more than one contact zone"):
-        contact.solve(MAT, contact.ProfilePunch(w_slope), load=0.01, speed=0.3, friction=0.3)
+def test_w_profile_touches_in_two_zones():
+    """The W profile under a small load touches in two separate zones: both are returned,
+    they carry the load between them, and ``ends`` (one zone) says to use ``zones``."""
+    r = contact.solve(MAT, contact.ProfilePunch(w_slope), load=0.01, speed=0.3, friction=0.3)
+    assert len(r.zones) == 2
+    (a, b) = r.zones
+    assert a.ends[1] < b.ends[0]
+    assert a.kinds == b.kinds == ("free", "free")
+    assert abs(a.load + b.load - 0.01) <= 1e-12 * 0.01
+    X = np.linspace(a.ends[0], b.ends[1], 101)
+    assert np.all(r.pressure(X) >= 0.0)
+    with pytest.raises(contact.ContactInputError, match="2 zones"):
+        r.ends
 
 
-def test_contact_loss_concave_profile():
-    with pytest.raises(contact.ContactLossError, match="no contact zone"):
+def test_face_falling_toward_an_unbounded_side_asks_for_its_extent():
+    with pytest.raises(contact.PunchGeometryError, match="face="):
         contact.solve(MAT, contact.ProfilePunch(lambda X: -X / 100.0), load=0.01, speed=0.3)
 
 
-def test_contact_loss_falling_wedge():
+def test_falling_wedge_asks_for_its_extent():
     punch = contact.ProfilePunch(lambda X: np.full_like(X, -0.01), corners=(0.0, None))
-    with pytest.raises(contact.ContactLossError, match="no contact length carries the load"):
+    with pytest.raises(contact.PunchGeometryError, match="face="):
         contact.solve(MAT, punch, load=0.01, speed=0.3, friction=0.3)
 
 

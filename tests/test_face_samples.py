@@ -141,7 +141,7 @@ def test_breaks_policy():
 
 def test_coarse_face_breaks_avoid_the_n_cap():
     """Few, widely spaced knots inside a wide contact: without breaks the O(h) jumps of the
-    slope's 4th derivative drive the adaptive n to its cap (warning); with them (the auto
+    slope's 4th derivative drive the adaptive n up (384 measured); with them (the auto
     policy for <= 8 knots) it stops at n = 24.  The ends agree either way."""
     X = np.linspace(-2.0, 2.0, 10)
     H = 1.0 - np.cos(X)
@@ -153,10 +153,9 @@ def test_coarse_face_breaks_avoid_the_n_cap():
                            load=2.5, **KW)
     assert sum(r1.ends[0] < b < r1.ends[1] for b in auto.breaks) == 2
     none = face_from_samples(X, H, outside="tangent", breaks="none")
-    with pytest.warns(RuntimeWarning, match="n = 3072 reached"):
-        r2 = contact.solve(MAT, contact.ProfilePunch(none.slope, breaks=none.breaks),
-                           load=2.5, **KW)
-    assert r1.n < r2.n
+    r2 = contact.solve(MAT, contact.ProfilePunch(none.slope, breaks=none.breaks),
+                       load=2.5, **KW)
+    assert 8 * r1.n <= r2.n
     np.testing.assert_allclose(r1.ends, r2.ends, rtol=0, atol=1e-10)
 
 
@@ -211,15 +210,17 @@ def test_sampled_face_ends_converge():
     knot interval d <~ h of an end the weight (1 -+ s)^(-alpha) (-beta) is not smooth and
     the slope error contributes ~h^5 d^(1 - max(alpha, beta)).  Expected order between
     6 - max(alpha, beta) (~5.5 here) and 6; measured 5.7 (errors 5.7e-6 .. 3.1e-13)."""
-    ref = contact.solve(MAT, contact.ProfilePunch(np.sin), load=0.1, **KW)
+    # the face ends at +-2 (corners): 1 - cos X on an unbounded face would touch again at
+    # every valley 2 pi k
+    ref = contact.solve(MAT, contact.ProfilePunch(np.sin, corners=(-2.0, 2.0)), load=0.1, **KW)
     errs, hs = [], []
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         for N in NS:
             X = np.linspace(-2.0, 2.0, N)
             face = face_from_samples(X, 1.0 - np.cos(X), outside="tangent")
-            r = contact.solve(MAT, contact.ProfilePunch(face.slope, breaks=face.breaks),
-                              load=0.1, **KW)
+            r = contact.solve(MAT, contact.ProfilePunch(face.slope, breaks=face.breaks,
+                                                        corners=face.extent), load=0.1, **KW)
             errs.append(max(abs(r.ends[0] - ref.ends[0]), abs(r.ends[1] - ref.ends[1])))
             hs.append(4.0 / (N - 1))
     p = _order(hs, errs)

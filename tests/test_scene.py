@@ -297,7 +297,7 @@ def test_case_that_loses_contact_is_named_not_a_traceback(tmp_path, capsys):
         run_scene(s)
     assert cli.main(["run", str(path), "--out", str(tmp_path / "o"), "--quiet"]) == 1
     err = capsys.readouterr().err
-    assert "ContactLossError" in err and str(path) in err and "Traceback" not in err
+    assert "PunchGeometryError" in err and str(path) in err and "Traceback" not in err
 
 
 def test_scene_error_pickles():
