@@ -25,6 +25,7 @@ the remaining J equations.
 """
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from dataclasses import dataclass, replace
@@ -119,15 +120,15 @@ class ZoneEquations:
         return out, totals
 
     # -- residuals ----------------------------------------------------------------------------
-    def residual(self, zones, totals):
+    def residual(self, zones, totals, scale=None):
         """(F, solution): the scaled residuals of the side conditions (module docstring).
         One zone with a free end needs only the load and the solvability residual, which
         :func:`sie.dominant_functionals` gives from one Gauss sum, exactly as the full solve
         would; the solution is then None (formed once Newton has converged)."""
+        scale = self._slope_scale(zones) if scale is None else scale
         if len(zones) == 1 and zones[0].kappa != 1:
-            return self._residual_one_zone(zones[0]), None
+            return self._residual_one_zone(zones[0], scale), None
         sol = self.solve(zones, totals)
-        scale = self._slope_scale(zones)
         F = []
         cons = sol.consistency
         for z, cz in zip(zones, cons):
@@ -142,14 +143,18 @@ class ZoneEquations:
         F.append(sol.integral() / self.load - 1.0)
         return np.array(F), sol
 
-    def _residual_one_zone(self, z):
+    def _residual_one_zone(self, z, scale):
         h, m = 0.5 * z.width, 0.5 * (z.c + z.d)
         br = [(x - m) / h for x in self.breaks if z.c < x < z.d]
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
-        fun = sie.dominant_functionals(lambda u: self.slope(m + h * u), a=self.a, b=self.b,
-                                       n=self.n, left=_SIE_END[z.left], right=_SIE_END[z.right],
-                                       breaks=br)
-        F = [fun.consistency / self._slope_scale([z])] if z.kappa == -1 else []
+        left, right = _SIE_END[z.left], _SIE_END[z.right]
+        f = lambda u: self.slope(m + h * u)      # noqa: E731
+        if br:
+            fun = sie.dominant_functionals(f, a=self.a, b=self.b, n=self.n, left=left,
+                                           right=right, breaks=br)
+        else:                                    # the rule prepared once per equation
+            fun = _functionals_rule(self.a, self.b, self.n, left, right)(f)
+        F = [fun.consistency / scale] if z.kappa == -1 else []
         F.append(h * fun.integral / self.load - 1.0)
         return np.array(F)
 
@@ -174,7 +179,8 @@ class ZoneEquations:
         totals = list(totals) if totals is not None else [
             self.load / len(zones) if z.kappa == 1 else None for z in zones]
         x = self.pack(zones, totals)
-        F, sol = self.residual(zones, totals)
+        fscale = self._slope_scale(zones)         # one scale for the whole iteration
+        F, sol = self.residual(zones, totals, fscale)
         J = jacobian if jacobian is not None and jacobian.shape == (F.size, x.size) else None
         fresh = False
         scale = self._fd_steps(zones, totals) * 1e7          # the zone widths (and loads)
@@ -182,7 +188,7 @@ class ZoneEquations:
             if np.max(np.abs(F)) <= 32 * np.finfo(float).eps:
                 break
             if J is None:
-                J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi), True
+                J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi, fscale), True
             try:
                 dx = -np.linalg.solve(J, F)
             except np.linalg.LinAlgError:
@@ -191,7 +197,7 @@ class ZoneEquations:
                                            f"singular at ends {[(z.c, z.d) for z in zones]}") from None
                 J = None
                 continue
-            step = self._damped_step(x, dx, F, zones, lo, hi)
+            step = self._damped_step(x, dx, F, zones, lo, hi, fscale)
             if step is None and np.max(np.abs(F)) <= _FLOOR:
                 break                       # at the rounding floor of the residuals
             if step is None or np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)):
@@ -219,7 +225,7 @@ class ZoneEquations:
             sol = self.solve(zones, totals)
         return zones, totals, sol, J
 
-    def _fd_jacobian(self, x, F, zones, totals, lo, hi):
+    def _fd_jacobian(self, x, F, zones, totals, lo, hi, scale):
         steps = self._fd_steps(zones, totals)
         J = np.empty((F.size, x.size))
         for k in range(x.size):
@@ -234,10 +240,10 @@ class ZoneEquations:
                     raise ContactLossError(
                         f"the contact zones {[(z.c, z.d) for z in zones]} are too close to "
                         "each other or to an edge of the face to vary their ends")
-            J[:, k] = (self.residual(zk, tk)[0] - F) / steps[k]
+            J[:, k] = (self.residual(zk, tk, scale)[0] - F) / steps[k]
         return J
 
-    def _damped_step(self, x, dx, F, zones, lo, hi):
+    def _damped_step(self, x, dx, F, zones, lo, hi, scale):
         """x + t dx for the largest t = 1, 1/2, ... that keeps the zones ordered and reduces
         max|F| (down to t = 1e-3); None if none does."""
         t = 1.0
@@ -245,7 +251,7 @@ class ZoneEquations:
             xn = x + t * dx
             zn, tn = self.unpack(xn, zones)
             if _ordered(zn, lo, hi):
-                Fn, soln = self.residual(zn, tn)
+                Fn, soln = self.residual(zn, tn, scale)
                 if np.max(np.abs(Fn)) < np.max(np.abs(F)):
                     return xn, zn, Fn, soln, tn
             t *= 0.5
@@ -260,6 +266,12 @@ class ZoneEquations:
             if z.kappa == 1:
                 out.append(1e-7 * max(abs(t), self.load))
         return np.array(out)
+
+
+@functools.lru_cache(maxsize=64)
+def _functionals_rule(a, b, n, left, right):
+    """sie.FunctionalsRule for one zone without breaks, prepared once per equation."""
+    return sie.FunctionalsRule(a=a, b=b, n=n, left=left, right=right)
 
 
 def _ordered(zones, lo, hi):
