@@ -31,45 +31,31 @@ Breaks policy (``breaks="auto"``)
 ``face.knots`` always holds every interior knot (where a derivative of H' jumps);
 ``face.breaks`` is what to pass to the solver: all knots when there are at most
 ``MAX_AUTO_BREAKS`` = 8 of them (quintic: N <= 14; cubic: N <= 12), otherwise none.
-``breaks="all"`` / ``"none"`` force either.  Why (measured on the development machine):
+``breaks="all"`` / ``"none"`` force either.  Why:
 
-* ``sie.solve(f, a=0, b=1, n=32, left=right="bounded", breaks=...)`` alone is cheap:
-  10 / 100 / 1000 breaks take 0.4 / 1.6-2.4 / 14-20 ms (the composite rule has
-  n - kappa + 24 nodes per piece, ``sie.unknowns._EXTRA_PER_PIECE``).  But contact.solve
-  calls it ~60 times in its free-end search (``sie.dominant_functionals`` per trial contact,
-  instead of the prepared Gauss rule used without breaks) and then evaluates the breaks
-  correction of the solution at 129 points plus both sides of every break (positivity
-  check) and, unless the slope is nondecreasing, off the contact (gap check).  Measured
-  contact.solve with all knots as breaks (zhou2014, c = 0.6, mu = 0.3): sampled cylinder
-  N = 1000 on [-2, 2], P = 0.01 (about 150 knots inside the contact): 0.79-0.86 s against
-  1.6-2.4 ms without breaks;
-  H = 1 - cos X on [-2, 2], P = 2.5: 2 / 4 / 8 knots inside the contact 0.07-0.12 /
-  0.16-0.21 / 0.25 s; 12 / 16 / 20 knots ~2.6 s, 0.9 GB / ~3.2 s, 1.5 GB / ~6.3 s, 2.1 GB
-  peak memory; 40 knots > 8 GB (one array of 10854 x 21602).  Without breaks the same
-  solves take 2-60 ms.
+* Every break splits the solver's projection rule (n - kappa + 24 nodes per piece,
+  ``sie.unknowns._EXTRA_PER_PIECE``) and adds a pointwise correction to the solution, and a
+  contact search solves many trial contacts: with about 150 knots inside the contact
+  (N = 1000 samples of a cylinder on [-2, 2], P = 0.01) one contact solve takes ~20 s with
+  all knots as breaks against ~25 ms without.
 * The ends do not change: without breaks they agree with the all-breaks solve to 1e-13 and
-  with the exact face to the interpolation error (e.g. 3.1e-6 / 1.7e-8 / 2.2e-10 / 3.8e-12 at
-  N = 10 / 20 / 40 / 80), because the unresolved jumps are of the size of that error.
-* The one cost of "none": with few, widely spaced knots inside a wide contact the O(h)
-  jumps are large, and the adaptive n runs to 3072 and warns ("n = 3072 reached with a
-  change of ~3e-12") although the ends are as accurate (quintic: N = 10, 12 on [-2, 2]
-  with 2 knots in the contact; N <= 30 when the contact covers ~85% of [-1, 1]; ~60 ms).
-  8 breaks cost at most ~0.25 s and ~15 MB, which is why the coarsest tables get them.
-
-So with N = 1000 samples contact.solve runs with no breaks: 1.6-3 ms measured (sampled
-cylinder 1.6-2.4 ms, H = 1 - cos X 2.3-3.0 ms; the < 20 ms benchmark target is met); all
-994 knots as breaks would miss it by 400x.
+  with the exact face to the interpolation error (3.1e-6 / 1.7e-8 / 2.2e-10 / 3.8e-12 at
+  N = 10 / 20 / 40 / 80 for H = 1 - cos X), because the unresolved jumps are of the size of
+  that error.
+* The one cost of "none": with few, widely spaced knots inside a wide contact the O(h) jumps
+  are large and the adaptive n grows (n = 384 for 10 samples on [-2, 2] at P = 2.5, against
+  24 with the 4 knots as breaks); 8 breaks are cheap, which is why the coarsest tables get
+  them.
 
 Outside the samples
 -------------------
 ``outside="raise"`` (default): :meth:`SampledFace.height` / :meth:`SampledFace.slope` raise
 :class:`OutsideSamplesError` at an X outside ``extent`` (beyond a rounding slack of
-64 eps * max(|X_0|, |X_{N-1}|, X_{N-1} - X_0), which is clamped).  Note that
-``contact.solve`` on a ProfilePunch with free ends checks the gap up to 16 contact widths
-beyond each end, so it needs ``outside="tangent"`` unless the samples extend that far:
-H continued by its end tangents (H' constant beyond the ends), the mildest assumption
-about a face that was not measured there.  Check then that ``result.ends`` lie inside
-``face.extent``: a contact reaching beyond it rests on the continuation.
+64 eps * max(|X_0|, |X_{N-1}|, X_{N-1} - X_0), which is clamped).  Give the face its extent
+(``ProfilePunch(face.slope, breaks=face.breaks, corners=face.extent)``): the contact search
+then stays on the measured face, and a contact that reaches an end of it turns that end into
+a corner.  ``outside="tangent"`` continues H by its end tangents (H' constant beyond the
+ends), for a face that is known to go on.
 """
 from __future__ import annotations
 
