@@ -26,6 +26,7 @@ from .zones import CORNER, FREE, Zone, ZoneEquations, _ordered
 __all__ = ["ZoneState", "first_touch", "follow_load"]
 
 _GROWTH = 4.0          # largest load ratio of one continuation step
+_CHECK_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)     # where p >= 0 is checked
 _MIN_RATIO = 1e-9      # the finest load step (relative) before giving up
 
 
@@ -151,16 +152,9 @@ def _try_step(face, eq, state, P):
 
 
 def _clip(zones, lo, hi):
-    out = []
-    for z in zones:
-        c, d = max(z.c, lo), min(z.d, hi)
-        out.append(replace(z, c=c, d=d))
-    prev = -math.inf
-    for z in out:
-        if not prev < z.c < z.d:
-            return None
-        prev = z.d
-    return out
+    """The zones cut to [lo, hi], or None when they no longer are ordered with gaps."""
+    out = [replace(z, c=max(z.c, lo), d=min(z.d, hi)) for z in zones]
+    return out if _ordered(out, lo, hi) else None
 
 
 def _violations(face, eq, state):
@@ -169,7 +163,7 @@ def _violations(face, eq, state):
     sol = state.solution
     tol = _resolution(sol)
     for j, z in enumerate(state.zones):
-        X = z.c + z.width * (0.5 + 0.5 * np.cos(np.pi * (np.arange(64) + 0.5) / 64))
+        X = z.points(_CHECK_U)
         if np.min(sol(X)) < -tol * np.max(np.abs(sol(X))):
             return True
     if face.convex and len(state.zones) == 1:

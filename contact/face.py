@@ -52,10 +52,15 @@ class Face:
         return total if x0 <= x1 else -total
 
     def rise_from(self, ref, X):
-        """H(X) - H(ref) at each X."""
+        """H(X) - H(ref) at each X (without ``height``: the rises between neighbouring
+        points, summed outward from ref, so that each stretch is integrated once)."""
+        X = np.asarray(X, float)
         if self.height is not None:
-            return self.height(np.asarray(X, float)) - float(self.height(np.array([ref]))[0])
-        return np.array([self.rise(ref, float(x)) for x in np.ravel(X)])
+            return self.height(X) - float(self.height(np.array([ref]))[0])
+        pts, inv = np.unique(np.concatenate([[float(ref)], X.ravel()]), return_inverse=True)
+        steps = np.array([self.rise(p, q) for p, q in zip(pts[:-1], pts[1:])])
+        H = np.concatenate([[0.0], np.cumsum(steps)])
+        return (H[inv[1:]] - H[inv[0]]).reshape(X.shape)
 
     # -- where the face is lowest --------------------------------------------------------
     @property

@@ -190,8 +190,8 @@ def _solve_adaptive(face, eq, load, adaptive, tol, punch):
                                          jacobian=state.jacobian)
         width = zs[-1].d - zs[0].c
         d_ends = max(max(abs(a.c - b.c), abs(a.d - b.d)) for a, b in zip(zs, state.zones)) / width
-        X = np.concatenate([0.5 * (z.c + z.d) + 0.5 * (z.d - z.c) * u for z in zs])
-        Xo = np.concatenate([0.5 * (z.c + z.d) + 0.5 * (z.d - z.c) * u for z in state.zones])
+        X = np.concatenate([z.points(u) for z in zs])
+        Xo = np.concatenate([z.points(u) for z in state.zones])
         # compare phi-like values on each zone's own normalised points
         p1, p2 = state.solution(Xo), sol2(X)
         d_p = np.max(np.abs(p2 - p1)) / max(np.max(np.abs(p2)), np.finfo(float).tiny)

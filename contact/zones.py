@@ -59,6 +59,10 @@ class Zone:
     def width(self) -> float:
         return self.d - self.c
 
+    def points(self, u):
+        """X = m + h u at local points u of [-1, 1]."""
+        return 0.5 * (self.c + self.d) + 0.5 * self.width * np.asarray(u)
+
 
 @dataclass(frozen=True)
 class ZoneEquations:

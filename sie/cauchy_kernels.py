@@ -110,6 +110,19 @@ def _coefficients(kmax, a, b):
 
 
 @jit()
+def _setup(n, a, b, mu0, lr_max, z):
+    """What both drivers need: A_0, B_0 and c0 = A_0 mu_0 / pi of F_1 = P_1(z) F_0 + c0, the
+    start K per point (:func:`_starts`) and the recurrence coefficients up to max(n, K)."""
+    ap1 = a + 1.0
+    A0 = 0.5 * (ap1 + (b + 1.0))
+    B0 = ap1 - A0
+    c0 = A0 * mu0 / math.pi
+    K = _starts(n, lr_max, z)
+    Ak, Bk, Ck, iC = _coefficients(max(n, K.max()), a, b)
+    return A0, B0, c0, K, Ak, Bk, Ck, iC
+
+
+@jit()
 def _starts(n, lr_max, z):
     """K per point: 0 for the forward recurrence, -1 for |z| > _HUGE (F_0 ~ -mu_0/(pi z):
     the recurrence could overflow between two rescalings there), else Miller's start."""
@@ -156,12 +169,7 @@ def _miller_point(i, n, K, z, Ak, Bk, iC, A0, B0, c0, V):
 @jit()
 def basis_kernel(n, a, b, mu0, lr_max, z, zm1, zp1, p, V):
     """V[i, k] = F_k(z_i), k < n."""
-    ap1 = a + 1.0
-    A0 = 0.5 * (ap1 + (b + 1.0))
-    B0 = ap1 - A0
-    c0 = A0 * mu0 / math.pi
-    K = _starts(n, lr_max, z)
-    Ak, Bk, Ck, iC = _coefficients(max(n, K.max()), a, b)
+    A0, B0, c0, K, Ak, Bk, Ck, iC = _setup(n, a, b, mu0, lr_max, z)
     for i in range(z.shape[0]):
         zz = z[i]
         if K[i] < 0:
@@ -319,12 +327,7 @@ def _backward_lanes(idx, K0, n, z, A0, B0, c0, Ak, Bk, iC, c, out, w):
 def series_kernel(a, b, mu0, lr_max, z, zm1, zp1, p, c, out):
     """out[i] = sum_k c_k F_k(z_i), k < len(c)."""
     n = c.shape[0]
-    ap1 = a + 1.0
-    A0 = 0.5 * (ap1 + (b + 1.0))
-    B0 = ap1 - A0
-    c0 = A0 * mu0 / math.pi
-    K = _starts(n, lr_max, z)
-    Ak, Bk, Ck, iC = _coefficients(max(n, K.max()), a, b)
+    A0, B0, c0, K, Ak, Bk, Ck, iC = _setup(n, a, b, mu0, lr_max, z)
     order, first_fwd, first_bwd = _order_by_start(K)
     w = np.empty((8, _LANES))
     m = z.shape[0]
