@@ -13,13 +13,14 @@ from .errors import (ContactInputError, ContactLossError, DirectionError, Fricti
 from .material import Isotropic, Orthotropic, zhou2014
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
-from .solver import ContactResult, contact_length, solve
+from .result import ContactZone, LoadCurve
+from .solver import ContactResult, contact_length, load_curve, solve
 
 __all__ = [
     "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
-    "solve", "ContactResult", "contact_length",
+    "solve", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "contact_length",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
     "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",
     "NearRayleighWarning",

@@ -3,6 +3,7 @@
     contact run [SCENE.toml] [--out DIR] [--jobs N] [--quiet] [--scheduler ADDRESS]
     contact table1 [--digits D]
     contact constants --speed C [SCENE.toml]
+    contact punches
 
 A user error (a bad scene, an inadmissible speed, a profile that loses contact) prints one
 message naming the file, the key and what is allowed, and exits with status 2 (a bad scene or
@@ -20,6 +21,7 @@ import contact
 import sie
 
 from . import scene as scenes
+from .registry import KINDS
 
 #: The 14 relative speeds of Table 1 in Zhou, Lee & Jang 2014.
 TABLE1_SPEEDS = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.5, 2.0, 10.0)
@@ -40,7 +42,8 @@ def build_parser() -> argparse.ArgumentParser:
                     "2014, corrected): run TOML scenes, print the paper's Table 1 and the "
                     "surface constants.",
         epilog="Scene format: see the docstring of contact.scene (python -c 'import "
-               "contact.scene as s; help(s)') and the examples in validation/scenes/.")
+               "contact.scene as s; help(s)') and the examples in validation/scenes/.  Punch "
+               f"kinds: {', '.join(KINDS)} (contact punches lists their scene keys).")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     run = sub.add_parser(
@@ -78,6 +81,13 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--speed", type=float, metavar="C",
                    help="relative speed c = V / sqrt(C33/rho), 0 <= c < c_R")
     k.set_defaults(handler=cmd_constants)
+
+    pk = sub.add_parser(
+        "punches", help="list the punch kinds a scene can name, with their scene keys",
+        description="The punch kinds of [punch] kind = ... in a scene: the class each builds, "
+                    "its scene keys and whether the paper's closed form exists "
+                    "(numerics.method = \"closed_form\").")
+    pk.set_defaults(handler=cmd_punches)
     return parser
 
 
@@ -241,4 +251,28 @@ def format_constants(material, speeds, source: str) -> str:
              f"Rayleigh speed c_R = {c_R!r} (admissible: 0 <= c < c_R)",
              "  ".join(h.rjust(w) for h, w in zip(header, widths))]
     lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------
+# contact punches
+# --------------------------------------------------------------------------
+def cmd_punches(args) -> int:
+    print(format_punches())
+    return 0
+
+
+def format_punches() -> str:
+    """One row per punch kind of :data:`contact.registry.KINDS`: its class, scene keys and
+    closed form, then its summary."""
+    header = ("kind", "class", "scene keys", "closed form")
+    rows = [(k.name, f"contact.{k.cls.__name__}", ", ".join(k.keys), k.closed_form or "-")
+            for k in KINDS.values()]
+    widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(header)]
+    lines = ["Punch kinds ([punch] kind = ...; dimensions may be lists, i.e. sweeps; closed "
+             "forms in contact.closed_form)",
+             "  ".join(h.ljust(w) for h, w in zip(header, widths)).rstrip()]
+    lines += ["  ".join(v.ljust(w) for v, w in zip(r, widths)).rstrip() for r in rows]
+    lines.append("")
+    lines += [f"{k.name}: {k.summary}" for k in KINDS.values()]
     return "\n".join(lines)

@@ -13,20 +13,55 @@ from .constants import SurfaceConstants
 from .errors import ContactInputError
 from .punches import Punch
 
-__all__ = ["ContactResult", "ContactZone"]
+__all__ = ["ContactResult", "ContactZone", "LoadCurve"]
 
 
 @dataclass(frozen=True)
 class ContactZone:
-    """One contact zone: its ends, their kinds ("free": p -> 0, found from the load;
-    "corner": an edge of the face, p singular), the exponents of p ~ (x_right - X)^alpha and
-    (X - x_left)^beta, the index, and the load it carries."""
+    """One contact zone.
+
+    Attributes
+    ----------
+    ends : (float, float)
+        (x_left, x_right).
+    kinds : (str, str)
+        Each end "free" (p -> 0 there, the end found from the load) or "corner" (an edge of
+        the face: the end is fixed and p singular).
+    alpha, beta : float
+        Exponents of p ~ (x_right - X)^alpha and (X - x_left)^beta.
+    kappa : int
+        Index -(alpha + beta): 1 (two corners), 0 (one), -1 (two free ends).
+    load : float
+        The load the zone carries, its integral of p.
+    sif : dict
+        Stress intensity factors at its corner ends, keyed "left" / "right" (definitions:
+        :class:`ContactResult`); empty for two free ends.  Computed on first access.
+    """
     ends: tuple
     kinds: tuple
     alpha: float
     beta: float
     kappa: int
     load: float
+    _sif_source: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def width(self) -> float:
+        return self.ends[1] - self.ends[0]
+
+    @property
+    def sif(self) -> dict:
+        """SIFs at the corner ends, computed on first access (from phi at the ends)."""
+        src = self._sif_source
+        if src is None:
+            return {}
+        if isinstance(src, dict):
+            return dict(src)
+        cached = self.__dict__.get("_sif_cache")
+        if cached is None:
+            cached = _sif(src, self.ends, self.kinds, self.alpha, self.beta)
+            object.__setattr__(self, "_sif_cache", cached)
+        return dict(cached)
 
 
 @dataclass(eq=False)
@@ -73,7 +108,6 @@ class ContactResult:
     punch: Punch
     method: str = "numeric"
     solution: object = field(default=None, repr=False)
-    _sif: dict | None = field(default=None, repr=False)
     _residual: float | None = field(default=None, repr=False)
 
     # -- the zones ---------------------------------------------------------------
@@ -114,11 +148,9 @@ class ContactResult:
 
     @property
     def sif(self) -> dict:
-        """Stress intensity factors (see the class docstring), computed on first access."""
-        if self._sif is None:
-            self._one("sif")
-            self._sif = _sif(self.solution, self.zones[0])
-        return self._sif
+        """Stress intensity factors of the one zone (see the class docstring; for several
+        zones each ``zones[j].sif``)."""
+        return self._one("sif").sif
 
     # geometry ------------------------------------------------------------
     @property
@@ -208,17 +240,62 @@ def _residual_of(res):
     return float(np.max(np.abs(lhs - f)) / scale)
 
 
-def _sif(sol, zone):
-    """SIFs of one zone from phi at its local ends (h its half-width; Zhou et al. 2014,
-    eqs. (5.11)-(5.12), (5.23), (5.33))."""
-    h = 0.5 * (zone.ends[1] - zone.ends[0])
-    kinds = zone.kinds
+def _sif(phi_end, ends, kinds, alpha, beta):
+    """SIFs of one zone from phi at its local ends, ``phi_end(e)`` for e = -1, +1 (h its
+    half-width; Zhou et al. 2014, eqs. (5.11)-(5.12), (5.23), (5.33))."""
+    h = 0.5 * (ends[1] - ends[0])
     out = {}
     if kinds == ("corner", "corner"):
-        out["right"] = h ** (-zone.alpha) * sol.endpoint_value(1)
-        out["left"] = h ** (-zone.beta) * sol.endpoint_value(-1)
+        out["right"] = h ** (-alpha) * phi_end(1)
+        out["left"] = h ** (-beta) * phi_end(-1)
     elif kinds == ("corner", "free"):
-        out["left"] = 2.0 ** zone.alpha * h ** (-zone.beta) * sol.endpoint_value(-1)
+        out["left"] = 2.0 ** alpha * h ** (-beta) * phi_end(-1)
     elif kinds == ("free", "corner"):
-        out["right"] = 2.0 ** zone.beta * h ** (-zone.alpha) * sol.endpoint_value(1)
+        out["right"] = 2.0 ** beta * h ** (-alpha) * phi_end(1)
     return out
+
+
+@dataclass(frozen=True, eq=False)
+class LoadCurve:
+    """The contact at each load of a load curve (:func:`contact.load_curve`).
+
+    Attributes
+    ----------
+    loads : ndarray
+        The loads, ascending.
+    results : tuple of ContactResult
+        The contact at each load (zones, pressure, fields).
+    events : tuple
+        Where the zones changed between first touch and the last load, in load order
+        (:class:`contact.continuation.Event`: load, kind "new zone" / "merge" / "edge" /
+        "split", zone index).
+
+    ``len(curve)``, ``curve[i]`` and iteration go over ``results``.
+    """
+    loads: np.ndarray
+    results: tuple
+    events: tuple = ()
+
+    def __len__(self):
+        return len(self.results)
+
+    def __getitem__(self, i):
+        return self.results[i]
+
+    def __iter__(self):
+        return iter(self.results)
+
+    @property
+    def zone_count(self) -> np.ndarray:
+        """Number of contact zones at each load."""
+        return np.array([len(r.zones) for r in self.results], dtype=int)
+
+    @property
+    def contact_length(self) -> np.ndarray:
+        """The summed width of the zones at each load."""
+        return np.array([sum(z.width for z in r.zones) for r in self.results])
+
+    @property
+    def span(self) -> np.ndarray:
+        """(x_left of the first zone, x_right of the last) at each load, shape (m, 2)."""
+        return np.array([(r.zones[0].ends[0], r.zones[-1].ends[1]) for r in self.results])

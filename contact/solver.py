@@ -20,16 +20,18 @@ from dataclasses import replace
 
 import numpy as np
 
+from sie.assembly import N_MAX_DENSE
+
 from .constants import SurfaceConstants, surface_constants
 from .continuation import ZoneState, follow_load
 from .errors import (ContactInputError, DirectionError, FrictionError, LoadError,
                      check_finite)
 from .material import Orthotropic
 from .punches import Punch
-from .result import ContactResult, ContactZone, _ClosedFormContactResult
+from .result import ContactResult, ContactZone, LoadCurve, _ClosedFormContactResult
 from .zones import ZoneEquations
 
-__all__ = ["solve", "ContactResult", "contact_length"]
+__all__ = ["solve", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
 
 _N_DEFAULT = 12
 _N_MAX = 4096      # adaptive doubling stops here (n = 3072 from 12: ~0.07 s for a free-end profile)
@@ -67,9 +69,24 @@ def _check_inputs(material, punch, load, speed, friction, direction, method, n, 
     return load, friction, int(direction), tol
 
 
+def _surface_constants(material, speed, constants):
+    if constants is None:
+        return surface_constants(material, speed)
+    if not isinstance(constants, SurfaceConstants):
+        raise ContactInputError(f"constants must be a contact.SurfaceConstants or None, got "
+                                f"{type(constants).__name__}")
+    if constants.c != check_finite("speed", speed, ContactInputError):
+        raise ContactInputError(f"constants are for speed {constants.c!r}, but speed = {speed!r}")
+    return constants
+
+
 def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="numeric",
           n=None, tol=1e-12, constants=None):
-    """Contact pressure, contact extent, SIFs and surface stress of a sliding punch.
+    """Contact zones, pressure, SIFs and surface stress of a sliding punch.
+
+    The zones are followed in load from the first touch of the face (its lowest point or
+    points) up to ``load`` (:mod:`contact.continuation`): zones appear where the face closes
+    a valley, merge, and turn an end into a corner at an edge of the face.
 
     Parameters
     ----------
@@ -87,9 +104,10 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     method : {"numeric", "closed_form"}
         "closed_form" evaluates the corrected closed forms (the four punches only).
     n : int, optional
-        Jacobi coefficients; by default chosen adaptively until two successive n agree to tol.
+        Jacobi coefficients per zone; by default chosen adaptively until two successive n
+        agree to tol.
     tol : float
-        Target relative accuracy of the pressure (adaptive n).
+        Target relative accuracy of the pressure and the ends (adaptive n).
     constants : SurfaceConstants, optional
         ``surface_constants(material, speed)`` computed beforehand (a sweep over friction
         at one speed shares them); must be for this speed.
@@ -97,21 +115,88 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     Returns
     -------
     ContactResult
+
+    Raises
+    ------
+    ContactInputError
+        (or a subclass: LoadError, FrictionError, SpeedError, ...) for inputs outside what is
+        allowed; ContactLossError when no change of the zones gives a valid contact.
+
+    Examples
+    --------
+    >>> import contact
+    >>> r = contact.solve(contact.zhou2014(), contact.CylindricalPunch(radius=100.0),
+    ...                   load=0.01, speed=0.6, friction=0.3)
+    >>> len(r.zones), r.zones[0].kinds
+    (1, ('free', 'free'))
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
-    if constants is None:
-        const = surface_constants(material, speed)
-    else:
-        if not isinstance(constants, SurfaceConstants):
-            raise ContactInputError(f"constants must be a contact.SurfaceConstants or None, got "
-                                    f"{type(constants).__name__}")
-        if constants.c != check_finite("speed", speed, ContactInputError):
-            raise ContactInputError(f"constants are for speed {constants.c!r}, but speed = {speed!r}")
-        const = constants
+    const = _surface_constants(material, speed, constants)
     mu_f = -direction * friction if friction != 0.0 else 0.0
     if method == "closed_form":
         return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f)
+    curve = _numeric(const, punch, [load], float(speed), friction, direction, mu_f, n, tol)
+    return curve.results[0]
+
+
+def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=None,
+               tol=1e-12, constants=None):
+    """The contact at each of many loads, in one continuation from first touch.
+
+    What a user plots as contact width against load: the zones are followed through the
+    loads in ascending order, and where they change (a new zone, a merge, an end reaching
+    an edge of the face) the load is located by bisection and recorded in ``events``.
+    Each result is what :func:`solve` returns at that load (the same adaptive n per load).
+
+    Parameters
+    ----------
+    material, punch, speed, friction, direction, n, tol, constants
+        As for :func:`solve`.
+    loads : sequence of float
+        Strictly increasing positive loads.
+
+    Returns
+    -------
+    LoadCurve
+
+    Raises
+    ------
+    LoadError
+        ``loads`` empty, not finite, not positive or not strictly increasing.
+
+    Examples
+    --------
+    >>> import numpy as np, contact
+    >>> w = contact.ProfilePunch(lambda X: 0.2 * X**3 - 0.2 * X, face=(-2.0, 2.0))
+    >>> curve = contact.load_curve(contact.zhou2014(), w, [1e-3, 1e-2, 1.0], speed=0.0)
+    >>> curve.zone_count.tolist()
+    [2, 2, 1]
+    """
+    _check_inputs(material, punch, 1.0, speed, friction, direction, "numeric", n, tol)
+    try:
+        P = np.array(loads, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise LoadError(f"loads must be a sequence of positive numbers, got {loads!r}") from None
+    if P.size == 0:
+        raise LoadError("loads must hold at least one load, got none")
+    if not np.all(np.isfinite(P)) or not np.all(P > 0):
+        bad = P[~(np.isfinite(P) & (P > 0))][0]
+        raise LoadError(f"every load must be positive and finite, got {bad!r}")
+    if np.any(np.diff(P) <= 0):
+        i = int(np.flatnonzero(np.diff(P) <= 0)[0])
+        raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {P[i]!r} and "
+                        f"loads[{i + 1}] = {P[i + 1]!r}")
+    friction = float(friction)
+    direction = int(direction)
+    const = _surface_constants(material, speed, constants)
+    mu_f = -direction * friction if friction != 0.0 else 0.0
+    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n,
+                    float(tol))
+
+
+def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
+    """The numeric path: the zones along the loads, refined in n at each load."""
     a = const.N12 * mu_f if mu_f != 0.0 else 0.0        # no friction terms at mu = 0
     if n is None and punch.slope_degree is not None:
         # polynomial right-hand side of degree d: the projection with n - kappa > d terms is
@@ -121,17 +206,25 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         n_use, adaptive = (n if n is not None else _N_DEFAULT), n is None
     face = punch.as_face()
     eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
-                       b=const.N11, load=load, n=n_use)
-    state = _solve_adaptive(face, eq, load, adaptive, tol, punch)
-    sol = state.solution
-    zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
-    integral = sum(z.load for z in zones)
-    res = ContactResult(
-        zones=zones, n=_basis_size(state), load_check=abs(integral - load) / load,
-        constants=const, load=load, speed=float(speed),
-        friction=friction, direction=direction, mu_f=mu_f, punch=punch, method="numeric",
-        solution=sol)
-    return res
+                       b=const.N11, load=loads[0], n=n_use)
+    states = follow_load(face, eq, loads)
+    results, events = [], []
+    n_start = eq.n
+    for state in states:
+        events.extend(getattr(state, "events", ()))
+        if adaptive:
+            # a load curve starts each load's doubling at half the n the previous one needed
+            state = _refine(face, eq, state, tol, punch, n_start)
+            n_start = max(eq.n, _basis_size(state) // 2)
+        sol = state.solution
+        zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
+        integral = sum(z.load for z in zones)
+        results.append(ContactResult(
+            zones=zones, n=_basis_size(state), load_check=abs(integral - state.load) / state.load,
+            constants=const, load=state.load, speed=speed, friction=friction,
+            direction=direction, mu_f=mu_f, punch=punch, method="numeric", solution=sol))
+    return LoadCurve(loads=np.array(loads, dtype=float), results=tuple(results),
+                     events=tuple(events))
 
 
 def _basis_size(state):
@@ -145,45 +238,47 @@ def _zone_info(z, j, sol):
     beta = sol.beta[j] if multi else sol.beta
     kappa = sol.kappa[j] if multi else sol.kappa
     load = sol.integral(interval=j) if multi else sol.integral()
+    interval = j if multi else None
     return ContactZone((float(z.c), float(z.d)), (z.left, z.right), float(alpha), float(beta),
-                       int(kappa), float(load))
+                       int(kappa), float(load),
+                       lambda end: sol.endpoint_value(end, interval=interval))
 
 
 def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
-    from . import closed_form as cf
-    from .punches import CylindricalPunch, FlatPunch, ParabolicPunch, TriangularPunch
-    N = (const.N11, const.N12, const.N21, const.N22, mu_f)
-    if type(punch) is FlatPunch:
-        c = cf.flat_closed_form(*N, punch.half_width, load)
-    elif type(punch) is TriangularPunch:
-        c = cf.triangular_closed_form(*N, punch.m0, load)
-    elif type(punch) is ParabolicPunch:
-        c = cf.parabolic_closed_form(*N, punch.radius, load)
-    elif type(punch) is CylindricalPunch:
-        c = cf.cylindrical_closed_form(*N, punch.radius, load)
-    else:
+    from .registry import KINDS, closed_form_kinds
+    kind = KINDS.get(punch.kind)
+    solver = kind.closed_form_function() if kind is not None and type(punch) is kind.cls else None
+    if solver is None:
+        names = ", ".join(KINDS[k].cls.__name__ for k in closed_form_kinds())
         raise ContactInputError(
-            f'method="closed_form" exists only for FlatPunch, TriangularPunch, ParabolicPunch and '
-            f'CylindricalPunch; use method="numeric" for {type(punch).__name__}')
+            f'method="closed_form" exists only for {names}; use method="numeric" for '
+            f'{type(punch).__name__}')
+    N = (const.N11, const.N12, const.N21, const.N22, mu_f)
+    c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
     zone = ContactZone(tuple(float(x) for x in c.ends), kinds, float(c.alpha), float(c.beta),
-                       int(c.kappa), float(load))
+                       int(c.kappa), float(load), dict(c.sif))
     return _ClosedFormContactResult(
         zones=(zone,), n=2,
         load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
-        method="closed_form", solution=c, _sif=dict(c.sif))
+        method="closed_form", solution=c)
 
 
-def _solve_adaptive(face, eq, load, adaptive, tol, punch):
-    """The zones at ``load`` from first touch (:func:`contact.continuation.follow_load`);
-    with ``adaptive``, n is doubled (Newton from the previous zones) until the ends and the
-    pressure at check points agree between n and 2n to ``tol``."""
-    (state,) = follow_load(face, eq, [load])
-    if not adaptive:
-        return state
-    u = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
+def _refine(face, eq, state, tol, punch, n_start):
+    """``state`` with n doubled (Newton from the previous zones and Jacobian) until the ends
+    and the pressure at check points agree between n and 2n to ``tol``; the doubling starts
+    from ``n_start`` (the state re-solved there first when it is larger than the state's)."""
     lo, hi = face.extent
+    eq = replace(eq, load=state.load)
+    m = len(state.zones)
+    n_start = min(n_start, _N_MAX // 2, N_MAX_DENSE // (2 * m) if m > 1 else n_start)
+    if n_start > eq.n:
+        eq = replace(eq, n=n_start)
+        zs, ts, sol, J = eq.solve_ends(list(state.zones), list(state.totals), lo=lo, hi=hi,
+                                       jacobian=state.jacobian)
+        state = ZoneState(state.load, tuple(zs), tuple(ts), sol, J)
+    u = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
     while True:
         eq2 = replace(eq, n=2 * eq.n)
         zs, ts, sol2, J = eq2.solve_ends(list(state.zones), list(state.totals), lo=lo, hi=hi,
@@ -195,8 +290,11 @@ def _solve_adaptive(face, eq, load, adaptive, tol, punch):
         # compare phi-like values on each zone's own normalised points
         p1, p2 = state.solution(Xo), sol2(X)
         d_p = np.max(np.abs(p2 - p1)) / max(np.max(np.abs(p2)), np.finfo(float).tiny)
-        new = ZoneState(load, tuple(zs), tuple(ts), sol2, J)
-        if max(d_ends, d_p) <= tol or 2 * eq2.n > _N_MAX:
+        new = ZoneState(state.load, tuple(zs), tuple(ts), sol2, J)
+        # the next doubling must fit one zone's cap and, for several zones, sie's dense
+        # system (N_MAX_DENSE unknowns in all)
+        last = 2 * eq2.n > _N_MAX or (len(zs) > 1 and 2 * eq2.n * len(zs) > N_MAX_DENSE)
+        if max(d_ends, d_p) <= tol or last:
             if max(d_ends, d_p) > tol:
                 hint = ("; if the slope varies on a length scale much shorter than the contact, "
                         "pass a larger n= (the error falls geometrically, at a rate set by that "
@@ -206,7 +304,7 @@ def _solve_adaptive(face, eq, load, adaptive, tol, punch):
                              "as breaks= (spectral instead of algebraic convergence)")
                 warnings.warn(f"contact.solve: n = {eq2.n} reached with a change of "
                               f"{max(d_ends, d_p):.2g} (> tol = {tol:.2g}) between n and 2n{hint}",
-                              RuntimeWarning, stacklevel=3)
+                              RuntimeWarning, stacklevel=4)
             return new
         eq, state = eq2, new
 

@@ -28,7 +28,7 @@ from __future__ import annotations
 import functools
 import math
 import warnings
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -40,7 +40,11 @@ __all__ = ["Zone", "ZoneEquations", "FREE", "CORNER"]
 
 FREE, CORNER = "free", "corner"
 _FLOOR = 1e-9       # residuals below this that no step reduces are rounding: converged
+_NEAR_FLOOR = 1e-12  # residuals below this that a step does not halve are rounding: converged
+_STEP_TOL = 1e-13    # see solve_ends: the error left (relative to the width) to stop at
+_F_TOL = 5e-14       # ... and the residuals
 _SIE_END = {FREE: "bounded", CORNER: "singular"}
+_NINE = np.linspace(0.0, 1.0, 9)     # where the slope scale of a zone is sampled
 
 
 @dataclass(frozen=True)
@@ -91,7 +95,7 @@ class ZoneEquations:
                              left=[_SIE_END[z.left] for z in zones],
                              right=[_SIE_END[z.right] for z in zones],
                              total=list(totals), breaks=br,
-                             intervals=[(z.c, z.d) for z in zones])
+                             intervals=[(z.c, z.d) for z in zones], check_residual=False)
 
     # -- unknowns <-> zones ----------------------------------------------------------------
     @staticmethod
@@ -119,51 +123,72 @@ class ZoneEquations:
             t = None
             if z.kappa == 1:
                 t, i = float(x[i]), i + 1
-            out.append(replace(z, c=c, d=d))
+            out.append(Zone(c, d, z.left, z.right))
             totals.append(t)
         return out, totals
 
     # -- residuals ----------------------------------------------------------------------------
     def residual(self, zones, totals, scale=None):
-        """(F, solution): the scaled residuals of the side conditions (module docstring).
-        One zone with a free end needs only the load and the solvability residual, which
-        :func:`sie.dominant_functionals` gives from one Gauss sum, exactly as the full solve
-        would; the solution is then None (formed once Newton has converged)."""
+        """(F, solution): the scaled residuals of the side conditions (module docstring):
+        each solvability residual divided by ``scale`` (default: the largest |H'| on the
+        zones), each gap condition by ``scale`` times the wider zone of its pair, and the
+        load as int p / P - 1.  One zone with a free end needs only the load and the
+        solvability residual, which :func:`sie.dominant_functionals` gives from one Gauss
+        sum, exactly as the full solve would; the solution is then None (formed once Newton
+        has converged)."""
         scale = self._slope_scale(zones) if scale is None else scale
+        R, sol = self._raw_residual(zones, totals)
+        return R / self._norms(zones, scale), sol
+
+    def _norms(self, zones, scale):
+        """What each raw residual is divided by (see :meth:`residual`)."""
+        out = [scale for z in zones if z.kappa == -1]
+        out += [scale * max(z0.width, z1.width) for z0, z1 in zip(zones[:-1], zones[1:])]
+        out.append(1.0)
+        return np.array(out)
+
+    def _raw_residual(self, zones, totals):
+        """(R, solution): the side conditions in their own units (solvability residuals in
+        units of H', gaps in units of H, the load relative)."""
         if len(zones) == 1 and zones[0].kappa != 1:
-            return self._residual_one_zone(zones[0], scale), None
+            return self._raw_one_zone(zones[0]), None
         sol = self.solve(zones, totals)
-        F = []
-        cons = sol.consistency
-        for z, cz in zip(zones, cons):
-            if z.kappa == -1:
-                F.append(cz / scale)
+        R = [cz for z, cz in zip(zones, sol.consistency) if z.kappa == -1]
         if len(zones) > 1:
             ends = np.array([x for z0, z1 in zip(zones[:-1], zones[1:]) for x in (z0.d, z1.c)])
             V = sol.log_potential(ends).reshape(-1, 2)
             for k, (z0, z1) in enumerate(zip(zones[:-1], zones[1:])):
-                g = self.rise(z0.d, z1.c) + self.b * (V[k, 1] - V[k, 0])
-                F.append(g / (scale * max(z0.width, z1.width)))
-        F.append(sol.integral() / self.load - 1.0)
-        return np.array(F), sol
+                R.append(self.rise(z0.d, z1.c) + self.b * (V[k, 1] - V[k, 0]))
+        R.append(sol.integral() / self.load - 1.0)
+        return np.array(R), sol
 
-    def _residual_one_zone(self, z, scale):
+    def _functionals(self, z):
+        """sie.Functionals of one zone on its own (no other zone)."""
         h, m = 0.5 * z.width, 0.5 * (z.c + z.d)
         br = [(x - m) / h for x in self.breaks if z.c < x < z.d]
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
         left, right = _SIE_END[z.left], _SIE_END[z.right]
         f = lambda u: self.slope(m + h * u)      # noqa: E731
         if br:
-            fun = sie.dominant_functionals(f, a=self.a, b=self.b, n=self.n, left=left,
-                                           right=right, breaks=br)
-        else:                                    # the rule prepared once per equation
-            fun = _functionals_rule(self.a, self.b, self.n, left, right)(f)
-        F = [fun.consistency / scale] if z.kappa == -1 else []
-        F.append(h * fun.integral / self.load - 1.0)
-        return np.array(F)
+            return sie.dominant_functionals(f, a=self.a, b=self.b, n=self.n, left=left,
+                                            right=right, breaks=br)
+        return _functionals_rule(self.a, self.b, self.n, left, right)(f)   # prepared once
+
+    def _raw_one_zone(self, z):
+        fun = self._functionals(z)
+        R = [fun.consistency] if z.kappa == -1 else []
+        R.append(0.5 * z.width * fun.integral / self.load - 1.0)
+        return np.array(R)
+
+    def zone_loads(self, zones):
+        """The load each zone would carry on its own (no interaction between zones; exact
+        for one zone), None for a zone with two corners (its load is an unknown)."""
+        return [None if z.kappa == 1 else 0.5 * z.width * self._functionals(z).integral
+                for z in zones]
 
     def _slope_scale(self, zones):
-        X = np.concatenate([z.c + z.width * np.linspace(0.0, 1.0, 9) for z in zones])
+        """The size of H' on the zones: its largest magnitude at 9 points of each."""
+        X = np.concatenate([z.c + z.width * _NINE for z in zones])
         s = float(np.max(np.abs(self.slope(X))))
         return s if s > 0.0 else abs(self.b) * self.load / max(z.width for z in zones)
 
@@ -174,25 +199,41 @@ class ZoneEquations:
         return self.solve_ends(zones, totals, iterations=iterations, lo=lo, hi=hi)[:3]
 
     def solve_ends(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf,
-                   jacobian=None):
+                   jacobian=None, budget=None):
         """Newton's method on the side conditions with Broyden's rank-one updates of the
         Jacobian (a finite-difference Jacobian to start, unless ``jacobian`` -- e.g. the
         previous load step's -- is given, and again whenever an updated one stops reducing the
         residual); steps damped to keep the zones ordered and inside [lo, hi].  Returns
-        (zones, totals, solution, Jacobian)."""
+        (zones, totals, solution, Jacobian); the Jacobian is that of the scaled residuals
+        (:meth:`residual`) with respect to the unknowns in units of their zone's width (and
+        the loads in units of the load), which does not change when the zones grow alike, so
+        that another set of zones of the same topology can start from it.  ``budget``: the
+        most residual evaluations to spend (ContactLossError beyond it; a continuation step
+        that needs more is too long and is better halved).
+
+        Converged when the residuals are at 32 eps; or at 5e-14 with the error left in the
+        ends (the last step times the factor by which it cut the residuals) below 1e-13 of
+        the widths; or at the rounding floor (no step reduces them below 1e-9, or halves
+        them below 1e-12)."""
         totals = list(totals) if totals is not None else [
             self.load / len(zones) if z.kappa == 1 else None for z in zones]
         x = self.pack(zones, totals)
-        fscale = self._slope_scale(zones)         # one scale for the whole iteration
-        F, sol = self.residual(zones, totals, fscale)
-        J = jacobian if jacobian is not None and jacobian.shape == (F.size, x.size) else None
-        fresh = False
+        norms = self._norms(zones, self._slope_scale(zones))   # fixed for the whole iteration
+        raw = self._raw_residual if budget is None else _Budgeted(self._raw_residual, budget)
+        R, sol = raw(zones, totals)
+        F = R / norms
         scale = self._fd_steps(zones, totals) * 1e7          # the zone widths (and loads)
+        # the Jacobian is kept relative to the scales of the residuals and of the unknowns,
+        # where it does not change when the zones grow alike (exactly so on a homogeneous
+        # face): another set of zones of the same topology starts from it
+        J = jacobian / scale[None, :] if jacobian is not None and \
+            jacobian.shape == (F.size, x.size) else None
+        fresh = False
         for _ in range(iterations):
             if np.max(np.abs(F)) <= 32 * np.finfo(float).eps:
                 break
             if J is None:
-                J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi, fscale), True
+                J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi, norms, raw), True
             try:
                 dx = -np.linalg.solve(J, F)
             except np.linalg.LinAlgError:
@@ -201,9 +242,13 @@ class ZoneEquations:
                                            f"singular at ends {[(z.c, z.d) for z in zones]}") from None
                 J = None
                 continue
-            step = self._damped_step(x, dx, F, zones, lo, hi, fscale)
+            step = self._damped_step(x, dx, F, zones, lo, hi, norms, raw)
             if step is None and np.max(np.abs(F)) <= _FLOOR:
                 break                       # at the rounding floor of the residuals
+            if step is not None and np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)) \
+                    and np.max(np.abs(step[2])) <= _NEAR_FLOOR:
+                x, zones, totals, F, sol = step[0], step[1], step[4], step[2], step[3]
+                break                       # next to the floor: what is left is rounding
             if step is None or np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)):
                 if not fresh:               # an updated Jacobian that stopped working
                     J = None
@@ -214,9 +259,17 @@ class ZoneEquations:
                         f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})")
             xn, zn, Fn, soln, tn = step
             s = xn - x
-            J = J + np.outer(Fn - F - J @ s, s) / (s @ s)       # Broyden ("good") update
+            if np.max(np.abs(F)) > _NEAR_FLOOR:
+                # Broyden's ("good") update; not from residuals at the rounding floor, whose
+                # difference is noise along a step of the same size
+                J = J + np.outer(Fn - F - J @ s, s) / (s @ s)
             fresh = False
-            small = np.max(np.abs(s) / scale) <= 1e-15
+            # converged once the residuals are at 5e-14 and the error left in the ends,
+            # estimated as the step times the factor by which it cut the residual (the
+            # iteration contracts at least that fast), is below 1e-13 of each zone's width
+            cut = np.max(np.abs(Fn)) / np.max(np.abs(F))
+            small = (np.max(np.abs(Fn)) <= _F_TOL
+                     and cut * np.max(np.abs(s) / scale) <= _STEP_TOL)
             x, zones, totals, F, sol = xn, zn, tn, Fn, soln
             if small:
                 break
@@ -227,9 +280,9 @@ class ZoneEquations:
                     f"{np.max(np.abs(F)):.3g} after {iterations} iterations)")
         if sol is None:
             sol = self.solve(zones, totals)
-        return zones, totals, sol, J
+        return zones, totals, sol, (None if J is None else J * scale[None, :])
 
-    def _fd_jacobian(self, x, F, zones, totals, lo, hi, scale):
+    def _fd_jacobian(self, x, F, zones, totals, lo, hi, norms, raw):
         steps = self._fd_steps(zones, totals)
         J = np.empty((F.size, x.size))
         for k in range(x.size):
@@ -244,18 +297,20 @@ class ZoneEquations:
                     raise ContactLossError(
                         f"the contact zones {[(z.c, z.d) for z in zones]} are too close to "
                         "each other or to an edge of the face to vary their ends")
-            J[:, k] = (self.residual(zk, tk, scale)[0] - F) / steps[k]
+            J[:, k] = (raw(zk, tk)[0] / norms - F) / steps[k]
         return J
 
-    def _damped_step(self, x, dx, F, zones, lo, hi, scale):
+    def _damped_step(self, x, dx, F, zones, lo, hi, norms, raw):
         """x + t dx for the largest t = 1, 1/2, ... that keeps the zones ordered and reduces
-        max|F| (down to t = 1e-3); None if none does."""
-        t = 1.0
-        while t >= 1e-3:
+        max|F| (down to t = 1e-3; only t = 1 once max|F| is at the rounding floor, where a
+        shorter step cannot help); None if none does."""
+        t, t_min = 1.0, (1e-3 if np.max(np.abs(F)) > _FLOOR else 1.0)
+        while t >= t_min:
             xn = x + t * dx
             zn, tn = self.unpack(xn, zones)
             if _ordered(zn, lo, hi):
-                Fn, soln = self.residual(zn, tn, scale)
+                Rn, soln = raw(zn, tn)
+                Fn = Rn / norms
                 if np.max(np.abs(Fn)) < np.max(np.abs(F)):
                     return xn, zn, Fn, soln, tn
             t *= 0.5
@@ -270,6 +325,20 @@ class ZoneEquations:
             if z.kappa == 1:
                 out.append(1e-7 * max(abs(t), self.load))
         return np.array(out)
+
+
+class _Budgeted:
+    """A residual function that raises ContactLossError after ``budget`` calls."""
+
+    def __init__(self, fn, budget):
+        self.fn, self.left = fn, int(budget)
+
+    def __call__(self, zones, totals):
+        if self.left <= 0:
+            raise ContactLossError("Newton's method for the contact ends did not converge "
+                                   "within its budget of residual evaluations")
+        self.left -= 1
+        return self.fn(zones, totals)
 
 
 @functools.lru_cache(maxsize=64)

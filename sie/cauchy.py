@@ -339,70 +339,166 @@ def _poly_part_integral(wt: Weight, lo, hi):
     return 0.5 * ((hi + 1.0) ** 2 - (lo + 1.0) ** 2) - 2.0 * wt.alpha * (hi - lo)
 
 
-def _l0_right(wt: Weight, x):
-    """L_0 at x > -1 (inside or right of the interval)."""
-    out = np.empty(x.shape)
-    l1 = _l0_at_one(wt)
-    inside = x < 1.0
-    if np.any(inside):
-        xi = x[inside]
-        # int_x^1 w = mu_0 I_{(1-x)/2}(alpha+1, beta+1); for x < 0 from the complement
-        # mu_0 (1 - I_{(1+x)/2}(beta+1, alpha+1)): next to -1 the argument (1-x)/2 would be
-        # rounded next to 1, and I there is ~(1+x)^(beta+1) (2.7e-8 off at x = -1 + 1e-12)
-        iw = np.where(xi >= 0.0,
-                      wt.mu0 * sp.betainc(wt.alpha_p1, wt.beta_p1, 0.5 * (1.0 - xi)),
-                      wt.mu0 * sp.betaincc(wt.beta_p1, wt.alpha_p1, 0.5 * (1.0 + xi)))
-        out[inside] = l1 + (math.cos(math.pi * wt.alpha) * iw
-                            - _poly_part_integral(wt, xi, 1.0)) / wt.sin
-    mid = (x >= 1.0) & (x < 2.0)
-    if np.any(mid):
-        xm = x[mid]
-        # int_1^x (xi-1)^alpha (xi+1)^beta: xi = 1 + (x-1)(1+tau)/2, Gauss-Jacobi (0, alpha)
-        tau, wtau = gauss_jacobi_cached(30, 0.0, wt.alpha)
-        half = 0.5 * (xm - 1.0)
-        xi = 1.0 + half[:, None] * (1.0 + tau[None, :])
-        g = ((xi + 1.0) ** wt.beta) @ wtau
-        ig = half ** wt.alpha_p1 * g
-        out[mid] = l1 - (ig - _poly_part_integral(wt, 1.0, xm)) / wt.sin
-    far = x >= 2.0
-    if np.any(far):
-        out[far] = _l0_far(wt, x[far])
+def _l0_inside(wt: Weight, x):
+    """L_0 at -1 < x < 1."""
+    # int_x^1 w = mu_0 I_{(1-x)/2}(alpha+1, beta+1); for x < 0 from the complement
+    # mu_0 (1 - I_{(1+x)/2}(beta+1, alpha+1)): next to -1 the argument (1-x)/2 would be
+    # rounded next to 1, and I there is ~(1+x)^(beta+1) (2.7e-8 off at x = -1 + 1e-12)
+    iw = np.where(x >= 0.0,
+                  wt.mu0 * sp.betainc(wt.alpha_p1, wt.beta_p1, 0.5 * (1.0 - x)),
+                  wt.mu0 * sp.betaincc(wt.beta_p1, wt.alpha_p1, 0.5 * (1.0 + x)))
+    return _l0_at_one(wt) + (math.cos(math.pi * wt.alpha) * iw
+                             - _poly_part_integral(wt, x, 1.0)) / wt.sin
+
+
+def _l0_near_right(wt: Weight, x):
+    """L_0 at 1 < x < 2."""
+    # int_1^x (xi-1)^alpha (xi+1)^beta: xi = 1 + (x-1)(1+tau)/2, Gauss-Jacobi (0, alpha)
+    tau, wtau = gauss_jacobi_cached(30, 0.0, wt.alpha)
+    half = 0.5 * (x - 1.0)
+    xi = 1.0 + half[:, None] * (1.0 + tau[None, :])
+    g = ((xi + 1.0) ** wt.beta) @ wtau
+    ig = half ** wt.alpha_p1 * g
+    return _l0_at_one(wt) - (ig - _poly_part_integral(wt, 1.0, x)) / wt.sin
+
+
+_FAR_TERMS = 60          # |x| >= 2: 2^-60 < 1e-18 relative to mu_0
+
+
+@functools.lru_cache(maxsize=64)
+def _far_coefficients(wt: Weight):
+    """M_j / j, j = 1 .. 60 (read-only)."""
+    M = _moments(wt, _FAR_TERMS + 1)
+    out = M[1:] / np.arange(1, _FAR_TERMS + 1)
+    out.flags.writeable = False
     return out
 
 
 def _l0_far(wt: Weight, x):
-    """(1/pi) [mu_0 log|x| - sum_{j>=1} M_j / (j x^j)], |x| >= 2 (60 terms: 2^-60 < 1e-18)."""
-    M = _moments(wt, 61)
-    j = np.arange(1, 61)
+    """(1/pi) [mu_0 log|x| - sum_{j>=1} M_j / (j x^j)], |x| >= 2: the terms are below
+    mu_0 |x|^-j, so K terms with max|1/x|^K <= 2^-60 (at most 60, fewer farther out); the
+    powers 1/x^j by a running product."""
     y = 1.0 / x
-    series = (y[:, None] ** j[None, :]) @ (M[1:] / j)
+    top = float(np.max(np.abs(y))) if y.size else 0.5
+    K = _FAR_TERMS if top >= 0.5 else max(1, min(_FAR_TERMS, math.ceil(
+        _FAR_TERMS * math.log(2.0) / -math.log(top)))) if top > 0.0 else 1
+    powers = np.cumprod(np.broadcast_to(y[:, None], (y.size, K)), axis=1)
+    series = powers @ _far_coefficients(wt)[:K]
     return (wt.mu0 * np.log(np.abs(x)) - series) / math.pi
 
 
 def l0(wt: Weight, x):
-    """L_0(x) = (1/pi) int w(u) log|x - u| du at real x (any x; finite at the ends)."""
+    """L_0(x) = (1/pi) int w(u) log|x - u| du at real x (any x; finite at the ends): in
+    closed form inside and at the ends, by a Gauss-Jacobi rule for 1 < |x| < 2, by the
+    series in 1/x beyond; x < -1 by the reflection u -> -u."""
     x = np.asarray(x, dtype=float)
     out = np.empty(x.shape)
-    right = x >= -1.0
-    if np.any(right):
-        out[right] = _l0_right(wt, x[right])
-    left = ~right
-    if np.any(left):
-        xl = x[left]
-        far = xl <= -2.0
-        vals = np.empty(xl.shape)
-        if np.any(far):
-            vals[far] = _l0_far(wt, xl[far])
-        if np.any(~far):
-            vals[~far] = _l0_right(wt.reflected(), -xl[~far])
-        out[left] = vals
+    ax = np.abs(x)
+    kind = np.where(ax >= 2.0, 3, np.where(ax > 1.0, 2, np.where(ax == 1.0, 1, 0)))
+    present = np.bincount(kind.ravel(), minlength=4)
+    if present[3]:
+        sel = kind == 3
+        out[sel] = _l0_far(wt, x[sel])
+    if present[0]:
+        sel = kind == 0
+        out[sel] = _l0_inside(wt, x[sel])
+    if present[1]:
+        sel = kind == 1
+        out[sel] = np.where(x[sel] > 0.0, _l0_at_one(wt), _l0_at_one(wt.reflected()))
+    if present[2]:
+        sel = kind == 2
+        xs = x[sel]
+        vals = np.empty(xs.shape)
+        pos = xs > 0.0
+        if pos.any():
+            vals[pos] = _l0_near_right(wt, xs[pos])
+        if not pos.all():
+            vals[~pos] = _l0_near_right(wt.reflected(), -xs[~pos])
+        out[sel] = vals
     return out
 
 
+_FAR_SERIES_MAX_N = 256   # series longer than this take the far points the general way
+
+
+@functools.lru_cache(maxsize=64)
+def _far_series_table(wt: Weight, n: int):
+    """T[j-1, k] = (1/j) int w u^j P_k du, j = 1 .. 60, k < n (read-only): the moments of a
+    series sum_k c_k w P_k are T @ c.  From the Gauss rule of w (end-mass corrected) with
+    enough nodes to integrate u^60 P_{n-1} exactly."""
+    from .jacobi import jacobi_vandermonde
+    from .quadrature import WeightedRule
+    rule = WeightedRule.build((n + _FAR_TERMS) // 2 + 2, wt.alpha, wt.beta, wt.alpha_p1,
+                              wt.beta_p1)
+    x, omega = rule.x, rule.omega
+    if rule.end:
+        x, omega = np.append(x, float(rule.end)), np.append(omega, rule.corr)
+    j = np.arange(1, _FAR_TERMS + 1)
+    powers = x[None, :] ** j[:, None] / j[:, None]
+    out = powers @ (omega[:, None] * jacobi_vandermonde(n, wt.alpha, wt.beta, x))
+    out.flags.writeable = False
+    return out
+
+
+def _log_potential_far(c, wt: Weight, x):
+    """(1/pi) int w(u) sum_k c_k P_k(u) log|x - u| du at |x| >= 2, from the moments of the
+    series: (1/pi) [c_0 mu_0 log|x| - sum_{j>=1} M_j / (j x^j)], M_j = int w u^j sum c_k P_k
+    (|M_j| <= int |w phi|, so 60 terms leave 2^-60 of it; fewer farther out)."""
+    y = 1.0 / x
+    top = float(np.max(np.abs(y)))
+    K = _FAR_TERMS if top >= 0.5 else max(1, min(_FAR_TERMS, math.ceil(
+        _FAR_TERMS * math.log(2.0) / -math.log(top)))) if top > 0.0 else 1
+    moments = _far_series_table(wt, c.size)[:K] @ c
+    powers = np.cumprod(np.broadcast_to(y[:, None], (y.size, K)), axis=1)
+    return (c[0] * wt.mu0 * np.log(np.abs(x)) - powers @ moments) / math.pi
+
+
+@functools.lru_cache(maxsize=128)
+def _end_table(wt: Weight, n: int, end: float):
+    """(L_0(end), Re F~_k(end), k < n - 1): the log potential's pieces at an end (+-1) of
+    the interval, for a series of n terms (the values do not depend on the coefficients;
+    read-only)."""
+    v = np.array([end])
+    ends = (v - 1.0, v + 1.0)
+    row = cauchy_basis(n - 1, wt, v, shifted=True, ends=ends)[0].real if n > 1 else np.zeros(0)
+    row.flags.writeable = False
+    return float(l0(wt, v)[0]), row
+
+
 def log_potential_series(c, wt: Weight, x, ends=None):
-    """(1/pi) int w(u) sum_k c_k P_k(u) log|x - u| du at real x (1-d array)."""
+    """(1/pi) int w(u) sum_k c_k P_k(u) log|x - u| du at real x (1-d array): near the
+    interval (|x| < 2) from L_0 and the Cauchy transform of the shifted series (module
+    docstring; at the ends x = +-1 from tables of both, which do not depend on c), beyond
+    it from the moments of the series (:func:`_log_potential_far`)."""
     c = np.asarray(c, dtype=float)
-    out = c[0] * l0(wt, x) if c.size else np.zeros(x.shape)
+    x = np.asarray(x, dtype=float)
+    if c.size == 0:
+        return np.zeros(x.shape)
+    ax = np.abs(x)
+    far = ax >= 2.0 if c.size <= _FAR_SERIES_MAX_N else np.zeros(x.shape, dtype=bool)
+    at_end = ax == 1.0
+    if not (far.any() or at_end.any()):
+        return _log_potential_near(c, wt, x, ends)
+    out = np.empty(x.shape)
+    if far.any():
+        out[far] = _log_potential_far(c, wt, x[far])
+    if at_end.any():
+        scaled = c[1:] / (2.0 * np.arange(1, c.size))
+        for end in (1.0, -1.0):
+            sel = x == end
+            if sel.any():
+                L, row = _end_table(wt, c.size, end)
+                out[sel] = c[0] * L + scaled @ row
+    near = ~(far | at_end)
+    if near.any():
+        out[near] = _log_potential_near(c, wt, x[near], None if ends is None else
+                                        (ends[0][near], ends[1][near]))
+    return out
+
+
+def _log_potential_near(c, wt: Weight, x, ends=None):
+    """log_potential_series through L_0 and the shifted Cauchy transform (any x)."""
+    out = c[0] * l0(wt, x)
     if c.size > 1:
         k = np.arange(1, c.size, dtype=float)
         out = out + cauchy_series(c[1:] / (2.0 * k), wt, x, shifted=True, ends=ends).real

@@ -18,7 +18,7 @@ import contact.result
 import contact.solver
 from contact import cli
 from contact.scene import (CURVE_FIELDS, DEFAULT_SCENE_TOML, CaseError, SceneError,
-                           default_scene, load_scene, parse_scene_text, run_scene)
+                           default_scene, load_scene, parse_scene_text, run_case, run_scene)
 
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
 
@@ -40,12 +40,17 @@ def scene(text: str, **kw):
 # --------------------------------------------------------------------------
 # good files
 # --------------------------------------------------------------------------
+#: The shipped scenes that are not the paper's Figs 1-4: their number of cases and sweep.
+OTHER_SCENES = {"default": (1, ()), "profile_samples": (3, (("motion", "load"),)),
+                "w_face_two_zones": (2, (("motion", "friction"),))}
+
+
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
 def test_shipped_scenes_parse(path):
     s = load_scene(path)
     cases = s.cases()
-    if path.stem == "default":
-        assert len(cases) == 1
+    if path.stem in OTHER_SCENES:
+        assert (len(cases), s.sweep) == OTHER_SCENES[path.stem]
     else:                                   # the paper's Figs 1-4: a 4-point sweep each
         assert len(cases) == 4 and len(s.sweep) == 1
         swept = s.sweep[0][1]
@@ -463,3 +468,256 @@ def test_near_rayleigh_warning_is_collected_not_printed(recwarn):
     res = run_scene(s)
     assert any("NearRayleighWarning" in w for w in res.warnings)
     assert not [w for w in recwarn if issubclass(w.category, contact.NearRayleighWarning)]
+
+
+# --------------------------------------------------------------------------
+# profiles from data and from a height; faces with several contact zones
+# --------------------------------------------------------------------------
+def cylinder_closed_form(**motion):
+    """The cylindrical punch (R = 100) by the paper's corrected closed form."""
+    return contact.solve(contact.zhou2014(), contact.CylindricalPunch(100.0),
+                         method="closed_form", **motion)
+
+
+def test_tabulated_cylinder_gives_the_cylinder_ends():
+    """200 samples of X^2/200: the quintic spline is exact on a parabola, so the ends are the
+    cylinder's to rounding (reference: the closed form, which no spline enters)."""
+    s = load_scene(SCENES / "profile_samples.toml")
+    case = s.cases()[0]
+    assert case.inputs == {"speed": 0.6, "friction": 0.3, "direction": -1, "load": 0.01}
+    data = case.punch.get("data")
+    assert len(data.X) == 200 and data.X[0] == -0.5 and data.X[-1] == 0.5
+    assert s.punch["face"] == (-0.5, 0.5) and s.punch["interpolant"] == "quintic"
+    ref = cylinder_closed_form(load=0.01, speed=0.6, friction=0.3, direction=-1)
+    ends = run_case(case).entry["ends"]
+    width = ref.ends[1] - ref.ends[0]
+    assert np.max(np.abs(np.subtract(ends, ref.ends))) <= 1e-12 * width
+    assert s.echo()["punch"] == {"kind": "profile", "data": "cylinder_samples.csv",
+                                 "interpolant": "quintic", "face": [-0.5, 0.5]}
+
+
+@pytest.mark.parametrize("layout", ["comma-header", "whitespace", "comments-crlf"])
+def test_data_file_layouts(layout, tmp_path):
+    X = np.linspace(-1.0, 1.0, 9)
+    h = np.cos(X)
+    rows = [(repr(x), repr(y)) for x, y in zip(X.tolist(), h.tolist())]
+    if layout == "comma-header":
+        text = "X, h\n" + "".join(f"{a}, {b}\n" for a, b in rows)
+    elif layout == "whitespace":
+        text = "".join(f"  {a}\t {b}\n" for a, b in rows)
+    else:
+        text = "# measured\r\n\r\nX h\r\n" + "".join(f"{a} {b}\r\n# note\r\n" for a, b in rows)
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "f.csv").write_text(text, newline="")
+    path = tmp_path / "s.toml"
+    path.write_text(HEAD + '[punch]\nkind = "profile"\ndata = "sub/f.csv"\nface = [-0.5, 1.0]\n'
+                    + "[motion]\nload = 0.01\n")
+    spec = load_scene(path).cases()[0].punch
+    assert spec.get("data").X == tuple(X.tolist()) and spec.get("data").h == tuple(h.tolist())
+    assert spec.build().extent == (-0.5, 1.0)
+
+
+def test_data_travels_with_the_case(tmp_path):
+    """A case carries its samples, not the file: it is rebuilt after the file is gone."""
+    import pickle
+    X = np.linspace(-0.5, 0.5, 40)
+    (tmp_path / "f.csv").write_text("".join(f"{x!r} {x * x / 200.0!r}\n" for x in X.tolist()))
+    path = tmp_path / "s.toml"
+    path.write_text(HEAD + '[punch]\nkind = "profile"\ndata = "f.csv"\ninterpolant = "cubic"\n'
+                    "[motion]\nload = 0.01\n")
+    case = load_scene(path).cases()[0]
+    (tmp_path / "f.csv").unlink()
+    again = pickle.loads(pickle.dumps(case))
+    assert again == case
+    punch = again.punch.build()
+    x = np.linspace(-0.5, 0.5, 7)
+    np.testing.assert_allclose(punch.slope(x), x / 100.0, rtol=0, atol=1e-15)
+
+
+def write_data(tmp_path, text):
+    (tmp_path / "face.csv").write_text(text)
+    return tmp_path / "face.csv"
+
+
+GOOD_ROWS = "".join(f"{x} {x * x}\n" for x in (-1.0, -0.5, 0.0, 0.5, 1.0))
+BAD_DATA = {
+    "missing-file": (None, 'data = "nope.csv"\n', ["punch.data", "no such file", "nope.csv"]),
+    "directory": (None, 'data = "."\n', ["punch.data", "is a directory"]),
+    "not-utf8": (b"\xff\xfe\x00", 'data = "face.csv"\n', ["punch.data", "cannot read",
+                                                           "face.csv"]),
+    "not-a-number": ("X,h\n0.0,1.0\n1.0,abc\n", 'data = "face.csv"\n',
+                     ["punch.data", "face.csv", "line 3", "'abc' is not a number"]),
+    "three-columns": ("0 1\n1 2 3\n", 'data = "face.csv"\n',
+                      ["punch.data", "face.csv", "line 2", "3 columns, expected 2"]),
+    "too-few-rows": ("X,h\n0,0\n1,1\n2,4\n", 'data = "face.csv"\n',
+                     ["punch.data", "face.csv", "at least 4 samples", "got 3"]),
+    "empty": ("# nothing\n", 'data = "face.csv"\n', ["punch.data", "at least 4 samples"]),
+    "nan": ("0 0\n1 nan\n2 4\n3 9\n", 'data = "face.csv"\n',
+            ["punch.data", "face.csv", "h must be finite", "nan"]),
+    "unsorted": ("0 0\n2 4\n1 1\n3 9\n", 'data = "face.csv"\n',
+                 ["punch.data", "face.csv", "strictly increasing", "unsorted"]),
+    "repeated": ("0 0\n1 1\n1 1\n3 9\n", 'data = "face.csv"\n',
+                 ["punch.data", "face.csv", "repeated"]),
+    "not-a-string": (GOOD_ROWS, "data = 3\n", ["punch.data", "file name"]),
+    "unknown-interpolant": (GOOD_ROWS, 'data = "face.csv"\ninterpolant = "pchip"\n',
+                            ["punch.interpolant", "'pchip'", '"quintic" | "cubic"']),
+    "interpolant-without-data": (None, 'slope = [0.0, 0.01]\ninterpolant = "cubic"\n',
+                                 ["punch.interpolant", "punch.data"]),
+    "face-beyond-samples": (GOOD_ROWS, 'data = "face.csv"\nface = [-2.0, 1.0]\n',
+                            ["punch.face", "beyond the samples", "face.csv", "[-1.0, 1.0]"]),
+    "breaks-with-data": (GOOD_ROWS, 'data = "face.csv"\nbreaks = [0.0]\n',
+                         ["punch.breaks", "tabulated face"]),
+    "corners-with-data": (GOOD_ROWS, 'data = "face.csv"\ncorners = [-1.0, 1.0]\n',
+                          ["punch.corners", "punch.face"]),
+    "data-and-slope": (GOOD_ROWS, 'data = "face.csv"\nslope = [0.0, 0.01]\n',
+                       ["punch.slope", "together with punch.data", "exactly one"]),
+    "face-not-increasing": (None, 'slope = [0.0, 0.01]\nface = [1.0, -1.0]\n',
+                            ["punch.face", "not below"]),
+    "face-one-number": (None, 'slope = [0.0, 0.01]\nface = [1.0]\n',
+                        ["punch.face", "two numbers"]),
+    "height-not-a-string": (None, "height = [0.0, 1.0]\n", ["punch.height", "module:function"]),
+    "height-does-not-import": (None, 'height = "no_such_module_xyz:h"\n',
+                               ["punch.height", "cannot import"]),
+    "height-not-vectorised": (None, 'height = "math:cos"\n', ["punch.height", "vectorised"]),
+    "corner-inside-face": (None, 'slope = [0.0, 0.01]\ncorners = [-0.5, "free"]\n'
+                           "face = [-1.0, 1.0]\n", ["punch", "inside the face"]),
+}
+
+
+@pytest.mark.parametrize("name", list(BAD_DATA))
+def test_bad_profile_names_the_key_and_the_file(name, tmp_path):
+    content, punch, expected = BAD_DATA[name]
+    if isinstance(content, bytes):
+        (tmp_path / "face.csv").write_bytes(content)
+    elif content is not None:
+        write_data(tmp_path, content)
+    path = tmp_path / f"{name}.toml"
+    path.write_text(HEAD + '[punch]\nkind = "profile"\n' + punch + MOTION)
+    with pytest.raises(SceneError) as err:
+        load_scene(path)
+    message = str(err.value)
+    assert message.startswith(str(path)) and err.value.allowed
+    for piece in expected:
+        assert piece in message, (piece, message)
+
+
+def test_profile_height_alone_and_with_slope(tmp_path):
+    (tmp_path / "cyl_face.py").write_text(
+        "import numpy as np\n"
+        "def height(X):\n    return np.asarray(X, dtype=float) ** 2 / 200.0\n"
+        "def slope(X):\n    return np.asarray(X, dtype=float) / 100.0\n")
+    ref = cylinder_closed_form(load=0.01, speed=0.3, friction=0.3, direction=1)
+    width = ref.ends[1] - ref.ends[0]
+    for keys, tol in (('height = "cyl_face:height"\n', 1e-10),
+                      ('height = "cyl_face:height"\nslope = "cyl_face:slope"\n', 1e-12)):
+        path = tmp_path / "s.toml"
+        path.write_text(HEAD + '[punch]\nkind = "profile"\n' + keys +
+                        "[motion]\nload = 0.01\nspeed = 0.3\nfriction = 0.3\ndirection = 1\n")
+        ends = run_scene(load_scene(path)).cases[0].entry["ends"]
+        assert np.max(np.abs(np.subtract(ends, ref.ends))) <= tol * width, keys
+
+
+@pytest.fixture(scope="module")
+def w_face_run(tmp_path_factory):
+    """The shipped W-face scene through ``contact run`` (table printed, files written)."""
+    import contextlib
+    import io
+    out = tmp_path_factory.mktemp("w_face")
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout):
+        rc = cli.main(["run", str(SCENES / "w_face_two_zones.toml"), "--out", str(out)])
+    assert rc == 0
+    return json.loads((out / "result.json").read_text()), stdout.getvalue(), out
+
+
+def test_w_face_lists_two_mirror_zones_carrying_the_load(w_face_run):
+    """Independent checks: at friction 0 the face and the load are mirror-symmetric, so the
+    zones are too; the zones' loads add up to the load."""
+    result, _, _ = w_face_run
+    assert [c["inputs"]["friction"] for c in result["cases"]] == [0.0, 0.3]
+    for case in result["cases"]:
+        assert list(case) == ["inputs", "zones", "pressure", "sigma_xx"]
+        zones = case["zones"]
+        assert len(zones) == 2
+        for z in zones:
+            assert set(z) == {"ends", "kinds", "exponents", "index", "load"}
+            assert z["kinds"] == ["free", "free"] and z["index"] == -1
+            assert z["exponents"]["left"] + z["exponents"]["right"] == pytest.approx(1.0)
+        (l1, r1), (l2, r2) = zones[0]["ends"], zones[1]["ends"]
+        assert -2.0 < l1 < r1 < 0.0 < l2 < r2 < 2.0
+        load = case["inputs"]["load"]
+        assert abs(zones[0]["load"] + zones[1]["load"] - load) <= 1e-12 * load
+    (l1, r1), (l2, r2) = (z["ends"] for z in result["cases"][0]["zones"])
+    width = r2 - l1
+    assert abs(l1 + r2) <= 1e-10 * width and abs(r1 + l2) <= 1e-10 * width
+    x = np.array(result["cases"][0]["pressure"]["x"])
+    p = np.array(result["cases"][0]["pressure"]["values"])
+    inside = ((x > l1) & (x < r1)) | ((x > l2) & (x < r2))
+    assert np.all(p[inside] > 0.0) and np.all(p[~inside] == 0.0)
+
+
+def test_w_face_table_and_figures(w_face_run):
+    result, table, out = w_face_run
+    lines = table.splitlines()
+    header = next(line for line in lines if line.strip().startswith("case"))
+    assert header.split()[:3] == ["case", "friction", "zones"]
+    rows = [line.split() for line in lines[lines.index(header) + 1:][:2]]
+    for row, case in zip(rows, result["cases"]):
+        zones = case["zones"]
+        assert row[2] == "2"
+        assert row[3:5] == [f"{zones[0]['ends'][0]:.10g}", f"{zones[1]['ends'][1]:.10g}"]
+    assert "several zones" in table
+    for name in ("pressure.png", "sigma_xx.png"):
+        assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_sif_per_zone_with_several_zones(tmp_path):
+    """A W face cut at X = +-1.01: each zone reaches an edge, a corner.  Reference: the
+    definition K = lim |X - x_c|^(-e) p(X), from the pressure next to the corner."""
+    from contact.scene import write_outputs
+    s = scene(HEAD + """
+        [punch]
+        kind = "profile"
+        slope = [0.0, -0.2, 0.0, 0.2]
+        face = [-1.01, 1.01]
+        [motion]
+        load = 0.02
+        speed = 0.3
+        [outputs]
+        fields = ["sif", "pressure"]
+    """)
+    res = run_scene(s)
+    (case,) = res.cases
+    assert list(case.entry) == ["inputs", "zones", "pressure"]
+    left, right = case.entry["zones"]
+    assert left["kinds"] == ["corner", "free"] and right["kinds"] == ["free", "corner"]
+    assert set(left["sif"]) == {"left"} and set(right["sif"]) == {"right"}
+    assert left["sif"]["left"] == pytest.approx(right["sif"]["right"], rel=1e-10)   # mirror
+    ref = contact.solve(contact.zhou2014(), contact.ProfilePunch(
+        lambda X: 0.2 * X ** 3 - 0.2 * X, face=(-1.01, 1.01)), load=0.02, speed=0.3)
+    d = 1e-7
+    e = left["exponents"]["left"]
+    assert e < 0
+    k_def = d ** (-e) * ref.pressure(np.array([-1.01 + d]))[0]
+    assert left["sif"]["left"] == pytest.approx(k_def, rel=1e-5)
+    x, p = case.curve("pressure")
+    assert np.isnan(p[x == -1.01]).all() and np.isnan(p[x == 1.01]).all()
+    assert x[0] < -1.01 and x[-1] > 1.01
+    written = write_outputs(res, tmp_path)                 # one case: each zone shaded
+    assert tmp_path / "pressure.png" in written
+
+
+def test_zones_field_lists_one_zone_next_to_the_single_zone_fields():
+    s = sweep_scene('kind = "triangular"\nslope = 0.01', ["ends", "zones", "exponents", "sif"],
+                    friction="0.3", speed="0.6")
+    (case,) = run_scene(s).cases
+    assert list(case.entry) == ["inputs", "ends", "zones", "exponents", "sif"]
+    (zone,) = case.entry["zones"]
+    ref = contact.solve(contact.zhou2014(), contact.TriangularPunch(0.01), load=0.01, speed=0.6,
+                        friction=0.3, method="closed_form")
+    assert zone["ends"] == pytest.approx(list(ref.ends), rel=1e-12)
+    assert zone["ends"] == case.entry["ends"] and zone["kinds"] == ["corner", "free"]
+    assert [zone["exponents"]["right"], zone["exponents"]["left"]] == case.entry["exponents"]
+    assert zone["index"] == 0 and zone["load"] == pytest.approx(0.01, rel=1e-12)
+    assert zone["sif"] == case.entry["sif"] and set(zone["sif"]) == {"left"}
+    assert zone["sif"]["left"] == pytest.approx(ref.sif["left"], rel=1e-10)

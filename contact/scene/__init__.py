@@ -22,7 +22,7 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     friction = 0.3        # mu >= 0 (default 0)
     direction = -1        # -1: slides toward -X (trailing edge on the right), +1: toward +X
 
-    [outputs]
+    [outputs]             # fields: ends exponents sif zones pressure shear sigma_xx roots constants
     fields = ["ends", "exponents", "pressure", "sigma_xx", "sif"]
     x = { start = -0.8, stop = 0.8, num = 801 }   # where curves are sampled
 
@@ -30,11 +30,16 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     method = "numeric"    # or "closed_form" (the four classical punches only)
     n = 64                # fixed number of Jacobi coefficients; or tol = 1e-12 (adaptive n)
 
-**Custom punches** (``kind = "profile"``) give the slope dv/dX of the face in one of three ways:
+The punch kinds and their keys are those of :data:`contact.registry.KINDS` (``contact punches``
+lists them).
+
+**Custom punches** (``kind = "profile"``) give the face in one of these ways:
 
 * ``slope = [a0, a1, a2, ...]``: polynomial coefficients, low to high: dv/dX = a0 + a1 X + ...
 * ``slope = "module:function"``: a vectorised Python function of X (the scene file's directory is
   searched first when importing ``module``).
+* ``height = "module:function"``: the height v(X) instead (its slope by finite differences), or
+  together with ``slope`` (the height then gives the gap between zones exactly).
 * piecewise polynomials, one ``[[punch.pieces]]`` table each, in increasing X::
 
       [[punch.pieces]]
@@ -50,13 +55,33 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
 
   The joins are added to ``breaks`` automatically.
 
-plus ``breaks = [X, ...]`` (kinks of the face) and ``corners = [left, right]``: the X of a sharp
-corner that bounds the contact on that side, or ``"free"`` for a free end (TOML has no null;
-``"free"`` is the default on both sides).
+* ``data = "face.csv"``: measured samples, two columns X, h (comma or whitespace separated; a
+  header line and ``#`` comment lines are skipped), at least 4 rows, X increasing; the path is
+  relative to the scene file.  ``interpolant = "quintic"`` (default) or ``"cubic"``
+  (:func:`contact.samples.face_from_samples`).  The samples are read when the scene is loaded
+  and travel with each case.
 
-**Sweeps**: any scalar under [motion] or [punch] may be a list of values (for a profile punch
-only scalars count: its ``slope``, ``breaks`` and ``corners`` lists are data, not sweeps).  The
-scene runs the Cartesian product, the key met first in the file varying slowest.
+plus ``breaks = [X, ...]`` (kinks of the face), ``corners = [left, right]``: the X of a sharp
+corner that ends the face on that side, or ``"free"`` (TOML has no null; ``"free"`` is the
+default on both sides), and ``face = [X_min, X_max]``: the extent of the face (the default of
+a tabulated face is its samples' extent, which ``face`` may narrow).  Contact cannot go beyond
+the face: an end that reaches an edge becomes a sharp corner (singular pressure).  A tabulated
+face takes neither ``breaks`` (the spline's knots are handled by the interpolant) nor
+``corners`` (its edges are ``face``).
+
+**Several contact zones**: the contact is found from first touch, so a face with several
+valleys can touch in several zones.  A case with one zone writes ``ends``, ``exponents`` and
+``sif`` as they are; a case with several writes, in their place, ``zones``: one entry per
+zone, left to right, ``{"ends": [xl, xr], "kinds": ["free" | "corner", ...], "exponents":
+{"left": beta, "right": alpha}, "index": kappa, "load": its share of the load}`` (and
+``"sif"`` per zone when ``sif`` is asked).  Ask for ``"zones"`` to get that list for every
+case.  The table adds a ``zones`` column and shows the outer ends; the figures mark every
+zone.
+
+**Sweeps**: any scalar under [motion], and a punch's dimensions (``half_width``, ``slope``,
+``radius``), may be a list of values (a profile's lists -- ``slope``, ``breaks``, ``corners``,
+``face`` -- are data, not sweeps).  The scene runs the Cartesian product, the key met first in
+the file varying slowest.
 
 **Only what is asked is computed**: curves are sampled only for the requested fields
 (sigma_XX only with ``"sigma_xx"``), the characteristic roots and surface constants for the

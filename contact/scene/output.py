@@ -102,10 +102,11 @@ def _write_figures(result: SceneResult, out: Path) -> list[Path]:
         family = len(result.cases) > 1
         for res in result.cases:
             x, v = res.curve(name)
-            ax.plot(x, v, lw=1.3, label=res.label if family else None)
-        if not family and "ends" in result.cases[0].entry:
-            for x_end in result.cases[0].entry["ends"]:
-                ax.axvline(x_end, color="0.6", ls=":", lw=0.8)
+            (line,) = ax.plot(x, v, lw=1.3, label=res.label if family else None)
+            if family and len(res.zones) > 1:
+                _mark_zone_ends(ax, res.zones, line.get_color())
+        if not family:
+            _draw_zones(ax, result.cases[0].zones)
         ax.axhline(0.0, color="0.7", lw=0.6)
         ax.set_xlabel("X")
         ax.set_ylabel(_AXIS_LABELS[name])
@@ -119,6 +120,21 @@ def _write_figures(result: SceneResult, out: Path) -> list[Path]:
         plt.close(fig)
         written.append(path)
     return written
+
+
+def _draw_zones(ax, zones):
+    """One case: a dotted line at every contact end, each zone shaded when there are several."""
+    for z in zones:
+        for x_end in z["ends"]:
+            ax.axvline(x_end, color="0.6", ls=":", lw=0.8)
+        if len(zones) > 1:
+            ax.axvspan(*z["ends"], color="0.85", alpha=0.5, lw=0)
+
+
+def _mark_zone_ends(ax, zones, color):
+    """A family of curves: the ends of one case's zones as ticks on the axis, in its colour."""
+    ends = [x for z in zones for x in z["ends"]]
+    ax.plot(ends, np.zeros(len(ends)), ls="none", marker="|", ms=10, mew=1.2, color=color)
 
 
 def _robust_limits(curves) -> tuple:
@@ -137,7 +153,10 @@ def _robust_limits(curves) -> tuple:
 
 def format_table(result: SceneResult) -> str:
     """A short text table: one row per case with its swept inputs, ends, exponents, peak
-    pressure, SIFs and sigma_XX extremes (what was requested) and the time taken."""
+    pressure, SIFs and sigma_XX extremes (what was requested) and the time taken.
+
+    When a case has several contact zones, a ``zones`` column gives their number, and the ends,
+    exponents and SIFs shown are those of the outer ends (result.json lists every zone)."""
     scene = result.scene
     mat = scene.material
     c_R = contact.rayleigh_speed(mat.build())
@@ -151,19 +170,35 @@ def format_table(result: SceneResult) -> str:
         swept.append("speed")
     columns = ["case"] + swept
     rows = []
+    show_zones = any(len(res.zones) != 1 for res in result.cases)
+    outer = ("ends" in scene.fields or "zones" in scene.fields, "exponents" in scene.fields,
+             "sif" in scene.fields)
     for res in result.cases:
         e = res.entry
         row = {"case": str(res.index)}
         row.update({k: _fmt(e["inputs"][k]) for k in swept})
+        if show_zones:
+            row["zones"] = str(len(res.zones))
+        zones = e.get("zones") if len(res.zones) > 1 else None
         if "ends" in e:
             row["x_left"], row["x_right"] = (f"{x:.10g}" for x in e["ends"])
+        elif zones and outer[0]:
+            row["x_left"], row["x_right"] = (f"{x:.10g}" for x in
+                                             (zones[0]["ends"][0], zones[-1]["ends"][1]))
         if "exponents" in e:
             row["alpha"], row["beta"] = (f"{x:.8g}" for x in e["exponents"])
+        elif zones and outer[1]:
+            row["alpha"] = f"{zones[-1]['exponents']['right']:.8g}"
+            row["beta"] = f"{zones[0]['exponents']['left']:.8g}"
         if "pressure" in e:
             row["max p (sampled)"] = _extreme(e["pressure"]["values"], np.nanmax)
-        if "sif" in e:
-            row["K_left"] = f"{e['sif']['left']:.6g}" if "left" in e["sif"] else "-"
-            row["K_right"] = f"{e['sif']['right']:.6g}" if "right" in e["sif"] else "-"
+        sif = e.get("sif")
+        if sif is None and zones and outer[2]:
+            sif = {k: v for k, v in (("left", zones[0]["sif"].get("left")),
+                                     ("right", zones[-1]["sif"].get("right"))) if v is not None}
+        if sif is not None:
+            row["K_left"] = f"{sif['left']:.6g}" if "left" in sif else "-"
+            row["K_right"] = f"{sif['right']:.6g}" if "right" in sif else "-"
         if "sigma_xx" in e:
             row["min sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmin)
             row["max sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmax)
@@ -177,8 +212,12 @@ def format_table(result: SceneResult) -> str:
     widths = {k: max(len(k), *(len(r.get(k, "")) for r in rows)) for k in columns}
     lines = head + ["", "  " + "  ".join(f"{k:>{widths[k]}}" for k in columns)]
     lines += ["  " + "  ".join(f"{r.get(k, ''):>{widths[k]}}" for k in columns) for r in rows]
-    if "sif" in scene.fields and any(not res.entry["sif"] for res in result.cases):
+    if "sif" in scene.fields and any(r.get("K_left") == "-" or r.get("K_right") == "-"
+                                     for r in rows):
         lines.append("  (SIF '-': that contact end is free, the pressure vanishes there)")
+    if any(len(res.zones) > 1 for res in result.cases):
+        lines.append("  (several zones: x_left, x_right, alpha, beta, K_left, K_right are those "
+                     "of the outer ends; result.json lists every zone)")
     lines.append(f"  total time {result.timing_s:.3f} s for {len(result.cases)} case(s); units as "
                  "in the scene (stresses in the stiffness unit, lengths in the punch's unit)")
     return "\n".join(lines)

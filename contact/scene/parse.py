@@ -10,10 +10,13 @@ import numpy as np
 
 import contact
 
+from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
+                              closed_form_kinds, import_callable)
+from contact.samples import MIN_SAMPLES, SampleError, face_from_samples
+
 from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, MATERIAL_KEYS, METHODS,
                    MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS, PIECE_KEYS,
-                   PRESETS, PROFILE_KEYS, PUNCH_DIMENSIONS, Piece, PunchSpec, SECTIONS, Scene,
-                   SceneError, XGrid, X_KEYS, import_callable)
+                   PRESETS, PunchSpec, SECTIONS, Scene, SceneError, XGrid, X_KEYS)
 
 
 # --------------------------------------------------------------------------
@@ -115,7 +118,7 @@ class _Parser:
         fields, x = self.outputs(self.table(data, "outputs"))
         numerics = self.numerics(self.table(data, "numerics"), punch["kind"])
         order = [name for name in data if name in ("punch", "motion")]
-        sweepable = {"punch": PUNCH_DIMENSIONS[punch["kind"]], "motion": MOTION_KEYS}
+        sweepable = {"punch": KINDS[punch["kind"]].dimensions, "motion": MOTION_KEYS}
         sweep = tuple((sec, key) for sec in order
                       for key, v in (punch if sec == "punch" else motion).items()
                       if isinstance(v, tuple) and key in sweepable[sec])
@@ -160,26 +163,25 @@ class _Parser:
         return MaterialSpec(*C, rho=rho)
 
     def punch(self, table: dict) -> dict:
+        kinds = " | ".join(KINDS)
         if "kind" not in table:
-            raise self.error("punch.kind", "is missing", " | ".join(PUNCH_DIMENSIONS))
-        kind = table["kind"]
-        if kind not in PUNCH_DIMENSIONS:
-            close = difflib.get_close_matches(str(kind), PUNCH_DIMENSIONS, n=1)
+            raise self.error("punch.kind", "is missing", kinds)
+        name = table["kind"]
+        if not isinstance(name, str) or name not in KINDS:
+            close = difflib.get_close_matches(str(name), KINDS, n=1)
             guess = f"; did you mean {close[0]!r}?" if close else ""
-            raise self.error("punch.kind", f"unknown kind {kind!r}{guess}",
-                             " | ".join(PUNCH_DIMENSIONS))
-        dims = PUNCH_DIMENSIONS[kind]
-        allowed = ("kind",) + (PROFILE_KEYS if kind == "profile" else dims)
-        self.check_keys(table, allowed, "punch", hint=f" for a {kind} punch")
-        out = {"kind": kind}
-        if kind != "profile":
-            key = dims[0]
+            raise self.error("punch.kind", f"unknown kind {name!r}{guess}", kinds)
+        kind = KINDS[name]
+        self.check_keys(table, ("kind",) + kind.keys, "punch", hint=f" for a {name} punch")
+        out = {"kind": name}
+        if kind.form == "profile":
+            out.update(self.profile(table))
+            return out
+        for key in kind.dimensions:
             if key not in table:
-                raise self.error(f"punch.{key}", f"is missing (a {kind} punch needs it)",
+                raise self.error(f"punch.{key}", f"is missing (a {name} punch needs it)",
                                  "a positive number, or a list of them (a sweep)")
             out[key] = self.values(f"punch.{key}", table[key], self.positive)
-            return out
-        out.update(self.profile(table))
         return out
 
     def positive(self, key, value) -> float:
@@ -190,15 +192,33 @@ class _Parser:
         return v
 
     def profile(self, table: dict) -> dict:
+        shape = [k for k in PROFILE_SHAPE_KEYS if k in table]
+        allowed = ('slope = [a0, a1, ...] (dv/dX coefficients, low to high) or '
+                   '"module:function"; height = "module:function" (alone or with slope); '
+                   '[[punch.pieces]] tables; or data = "face.csv" (samples X, h)')
+        if not shape:
+            raise self.error("punch.slope", "a profile punch needs exactly one of slope, height, "
+                             "pieces and data (slope and height may go together)", allowed)
+        alone = [k for k in shape if k in ("pieces", "data")]
+        if alone and len(shape) > 1:
+            other = next(k for k in shape if k != alone[0])
+            raise self.error(f"punch.{other}", f"given together with punch.{alone[0]}: a profile "
+                             "punch needs exactly one of slope, height, pieces and data (slope "
+                             "and height may go together)", allowed)
+        if "data" in table:
+            return self.tabulated(table)
         out = {}
-        if ("slope" in table) == ("pieces" in table):
-            raise self.error("punch.slope", "a profile punch needs exactly one of slope and "
-                             "pieces", 'slope = [a0, a1, ...] (dv/dX coefficients, low to high), '
-                             'slope = "module:function", or [[punch.pieces]] tables')
         if "slope" in table:
             out["slope"] = self.profile_slope(table["slope"])
-        else:
+        if "height" in table:
+            out["height"] = self.function("punch.height", table["height"],
+                                          '"module:function", a vectorised v(X)')
+        if "pieces" in table:
             out["pieces"] = self.pieces(table["pieces"])
+        if "interpolant" in table:
+            raise self.error("punch.interpolant", "applies only to a tabulated face (punch.data)",
+                             'data = "face.csv" with interpolant = ' +
+                             " | ".join(f'"{i}"' for i in INTERPOLANTS))
         breaks = table.get("breaks", [])
         if not isinstance(breaks, list):
             raise self.error("punch.breaks", f"must be a list of numbers, got {_describe(breaks)}",
@@ -206,23 +226,95 @@ class _Parser:
         out["breaks"] = tuple(self.number(f"punch.breaks[{k}]", b, "a number (an X value)")
                               for k, b in enumerate(breaks))
         out["corners"] = self.corners(table.get("corners", [FREE, FREE]))
+        if "face" in table:
+            out["face"] = self.face(table["face"])
         return out
+
+    def tabulated(self, table: dict) -> dict:
+        """A face from samples: ``data`` (the file), ``interpolant`` and ``face``."""
+        for key, why in (("breaks", "the interpolant's knots are its breaks"),
+                         ("corners", "its edges are punch.face (default: the samples' extent)")):
+            if key in table:
+                raise self.error(f"punch.{key}", f"does not apply to a tabulated face "
+                                 f"(punch.data): {why}",
+                                 "data, interpolant and face for a tabulated face")
+        interpolant = table.get("interpolant", INTERPOLANTS[0])
+        if interpolant not in INTERPOLANTS:
+            raise self.error("punch.interpolant", f"unknown interpolant {interpolant!r}",
+                             " | ".join(f'"{i}"' for i in INTERPOLANTS))
+        samples = self.samples(table["data"], interpolant)
+        lo, hi = samples.X[0], samples.X[-1]
+        face = (lo, hi)
+        if "face" in table:
+            face = self.face(table["face"])
+            if face[0] < lo or face[1] > hi:
+                raise self.error("punch.face", f"[{face[0]!r}, {face[1]!r}] reaches beyond the "
+                                 f"samples of {samples.path}, which cover [{lo!r}, {hi!r}]",
+                                 "a face inside the samples' extent")
+        return {"data": samples, "interpolant": interpolant, "face": face}
+
+    def samples(self, value, interpolant) -> Samples:
+        """Read and check the samples of punch.data (two columns X, h)."""
+        allowed = ('a file of two columns X, h (comma or whitespace separated, an optional '
+                   f'header line, # comments), at least {MIN_SAMPLES} rows, X increasing; '
+                   "relative to the scene file's directory")
+        if not isinstance(value, str) or not value:
+            raise self.error("punch.data", f"must be a file name, got {_describe(value)}",
+                             allowed)
+        path = Path(value).expanduser()
+        if not path.is_absolute():
+            path = Path(self.base_dir or ".") / path
+        try:
+            text = path.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            raise self.error("punch.data", f"no such file {str(path)!r}", allowed) from None
+        except IsADirectoryError:
+            raise self.error("punch.data", f"{str(path)!r} is a directory, not a file",
+                             allowed) from None
+        except (OSError, UnicodeDecodeError) as exc:
+            raise self.error("punch.data", f"cannot read {str(path)!r}: {exc}", allowed) from None
+        try:
+            X, h = read_samples(text)
+        except ValueError as exc:
+            raise self.error("punch.data", f"{path}: {exc}", allowed) from None
+        try:
+            face_from_samples(X, h, kind=interpolant)
+        except SampleError as exc:
+            raise self.error("punch.data", f"{path}: {exc}", allowed) from None
+        return Samples(source=value, path=str(path), X=tuple(X), h=tuple(h))
+
+    def face(self, value) -> tuple:
+        allowed = "[X_min, X_max], two numbers with X_min < X_max: the extent of the face"
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.error("punch.face", f"must be a list of two numbers, got "
+                             f"{_describe(value)}", allowed)
+        lo, hi = (self.number(f"punch.face ({side})", v, allowed)
+                  for side, v in zip(("left", "right"), value))
+        if not lo < hi:
+            raise self.error("punch.face", f"X_min = {lo!r} is not below X_max = {hi!r}", allowed)
+        return lo, hi
+
+    def function(self, key, value, what) -> str:
+        """A "module:function" string that imports (checked now, imported again per case)."""
+        allowed = f"{what} (the scene's directory is searched first)"
+        if not isinstance(value, str):
+            raise self.error(key, f"must be a string 'module:function', got {_describe(value)}",
+                             allowed)
+        module, sep, name = value.partition(":")
+        if not sep or not module or not name:
+            raise self.error(key, f"{value!r} is not of the form 'module:function'", allowed)
+        try:
+            import_callable(value, self.base_dir)
+        except Exception as exc:               # any failure of user code is a scene error
+            raise self.error(key, f"cannot import {value!r}: {type(exc).__name__}: {exc}",
+                             "an importable module (the scene's directory is searched first) "
+                             "and a function in it") from None
+        return value
 
     def profile_slope(self, value):
         allowed = 'a list of polynomial coefficients of dv/dX, low to high, or "module:function"'
         if isinstance(value, str):
-            module, sep, name = value.partition(":")
-            if not sep or not module or not name:
-                raise self.error("punch.slope", f"{value!r} is not of the form 'module:function'",
-                                 allowed)
-            try:
-                import_callable(value, self.base_dir)
-            except Exception as exc:               # any failure of user code is a scene error
-                raise self.error("punch.slope", f"cannot import {value!r}: "
-                                 f"{type(exc).__name__}: {exc}",
-                                 "an importable module (the scene's directory is searched first) "
-                                 "and a function in it") from None
-            return value
+            return self.function("punch.slope", value, '"module:function", a vectorised dv/dX')
         if not isinstance(value, list) or not value:
             raise self.error("punch.slope", f"must be a non-empty list or a string, got "
                              f"{_describe(value)}", allowed)
@@ -364,9 +456,11 @@ class _Parser:
         if method not in METHODS:
             raise self.error("numerics.method", f"unknown method {method!r}",
                              " | ".join(repr(m) for m in METHODS))
-        if method == "closed_form" and kind == "profile":
-            raise self.error("numerics.method", "closed_form exists only for the four classical "
-                             "punches, not for a profile", '"numeric" for a profile punch')
+        if method == "closed_form" and KINDS[kind].closed_form is None:
+            have = ", ".join(closed_form_kinds())
+            raise self.error("numerics.method", f"closed_form exists only for the {have} "
+                             f"punches, not for a {kind} punch",
+                             f'"numeric" for a {kind} punch')
         if "n" in table and "tol" in table:
             raise self.error("numerics.n", "given together with numerics.tol",
                              "either n (fixed) or tol (n chosen adaptively)")
@@ -400,33 +494,97 @@ class _Parser:
         try:
             punch = spec.build()
         except contact.ContactInputError as exc:
-            key = f"punch.{spec.dimension_key}" if spec.dimension_key else "punch"
-            raise self.error(key, str(exc)) from None
-        if spec.kind == "profile":
-            lo, hi = _probe_range(punch)
+            if spec.dimension_key:
+                key, allowed = f"punch.{spec.dimension_key}", "a positive finite number"
+            else:
+                key, allowed = "punch", ('corners at the edges of the face (or "free"), face = '
+                                         "[X_min, X_max] with X_min < X_max, finite breaks")
+            raise self.error(key, str(exc), allowed) from None
+        if spec.kind != "profile" or spec.get("data") is not None:
+            return
+        X = np.linspace(*_probe_range(punch), 7)
+        checks = []
+        if spec.get("height") is not None:
+            checks.append(("punch.height", punch.height, "v(X)"))
+        slope_key = ("punch.pieces" if spec.get("pieces") else
+                     "punch.slope" if spec.get("slope") is not None else "punch.height")
+        checks.append((slope_key, punch.slope, "dv/dX"))
+        for key, fn, what in checks:
             try:
-                punch.slope(np.linspace(lo, hi, 7))
+                fn(X)
             except Exception as exc:               # user code: any failure is a scene error
-                raise self.error("punch.slope", f"{exc} (probed at X in [{lo:g}, {hi:g}])",
-                                 "a vectorised function returning finite real dv/dX "
-                                 "of the same shape as X") from None
+                raise self.error(key, f"{exc} (probed at X in [{X[0]:g}, {X[-1]:g}])",
+                                 f"a vectorised function returning finite real {what} of the "
+                                 "same shape as X") from None
 
 
 def _probe_range(punch) -> tuple:
-    xs = [c for c in punch.corners if c is not None] + list(punch.breaks)
+    """Where a profile's functions are tried: its face, or around its breaks and finite edges
+    (X in [-1, 1] when it has neither)."""
+    lo, hi = punch.extent
+    if math.isfinite(lo) and math.isfinite(hi):
+        return lo, hi
+    xs = [x for x in (lo, hi) if math.isfinite(x)] + list(punch.breaks)
     if not xs:
         return -1.0, 1.0
-    lo, hi = min(xs), max(xs)
-    pad = max(1.0, hi - lo)
-    return lo - pad, hi + pad
+    a, b = min(xs), max(xs)
+    pad = max(1.0, b - a)
+    return (lo if math.isfinite(lo) else a - pad), (hi if math.isfinite(hi) else b + pad)
 
 
 def _default_title(punch: dict) -> str:
-    kind = punch["kind"]
-    dims = PUNCH_DIMENSIONS[kind]
+    name = punch["kind"]
+    dims = KINDS[name].dimensions
+    if name == "profile" and "data" in punch:
+        return f"profile punch, data = {punch['data'].source}"
     if not dims or isinstance(punch[dims[0]], tuple):
-        return f"{kind} punch"
-    return f"{kind} punch, {dims[0]} = {punch[dims[0]]:g}"
+        return f"{name} punch"
+    return f"{name} punch, {dims[0]} = {punch[dims[0]]:g}"
+
+
+def read_samples(text: str) -> tuple:
+    """The two columns X, h of a samples file.
+
+    Blank lines and lines starting with ``#`` are skipped; the first other line is a header
+    when it is not two numbers; columns are separated by a comma or by whitespace.
+
+    Returns
+    -------
+    (list of float, list of float)
+
+    Raises
+    ------
+    ValueError
+        A row without exactly two columns, or a value that is not a number (naming the line).
+    """
+    X, h = [], []
+    first = True
+    for number, line in enumerate(text.splitlines(), start=1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        cells = [c.strip() for c in (line.split(",") if "," in line else line.split())]
+        numbers = [_is_number(c) for c in cells]
+        header, first = first and not any(numbers), False
+        if header:
+            continue
+        if not all(numbers):
+            bad = cells[numbers.index(False)]
+            raise ValueError(f"line {number}: {bad!r} is not a number")
+        values = [float(c) for c in cells]
+        if len(values) != 2:
+            raise ValueError(f"line {number}: {len(values)} columns, expected 2 (X, h)")
+        X.append(values[0])
+        h.append(values[1])
+    return X, h
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _describe(value) -> str:

@@ -16,7 +16,7 @@ import contact
 import sie
 
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, MaterialSpec,
-                   SPEED_FIELDS, Scene, UNITS, _fmt)
+                   SPEED_FIELDS, Scene, UNITS, ZONE_FIELDS, _fmt)
 
 
 # --------------------------------------------------------------------------
@@ -24,13 +24,29 @@ from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, 
 # --------------------------------------------------------------------------
 @dataclass
 class CaseResult:
-    """What one case produced: the JSON entry (inputs, then the requested fields in the
-    scene's order, curves as numpy arrays), the solve time and any warnings."""
+    """What one case produced.
+
+    Attributes
+    ----------
+    index : int
+    label : str
+    entry : dict
+        The JSON entry: inputs, then the requested fields in the scene's order (curves as
+        numpy arrays).  With several contact zones, ``zones`` stands in place of the
+        single-zone fields ends, exponents and sif.
+    time_s : float
+        Time to solve the case and sample its fields.
+    warnings : list of str
+    zones : list of dict
+        Every contact zone (:func:`zone_entry`), whatever the fields asked: the table and the
+        figures mark them.
+    """
     index: int
     label: str
     entry: dict
     time_s: float
     warnings: list = field(default_factory=list)
+    zones: list = field(default_factory=list)
 
     def curve(self, name):
         """(x, values) of a sampled curve field."""
@@ -100,9 +116,14 @@ def run_case(case: Case) -> CaseResult:
                                n=case.numerics.n, tol=case.numerics.tol,
                                constants=_shared_constants(material, case.speed))
         entry = {"inputs": dict(case.inputs)}
+        several = len(result.zones) > 1
+        with_sif = "sif" in case.fields
         X = None
         for name in case.fields:
-            if name == "ends":
+            if name == "zones" or (several and name in ZONE_FIELDS):
+                if "zones" not in entry:
+                    entry["zones"] = [zone_entry(z, with_sif) for z in result.zones]
+            elif name == "ends":
                 entry["ends"] = [result.ends[0], result.ends[1]]
             elif name == "exponents":
                 entry["exponents"] = [result.alpha, result.beta]
@@ -112,24 +133,37 @@ def run_case(case: Case) -> CaseResult:
                 if X is None:
                     X = case.x.points() if case.x is not None else _auto_x(result)
                 entry[name] = {"x": X, "values": _sample(result, name, X)}
+        zones = [zone_entry(z, False) for z in result.zones]
     return CaseResult(case.index, case.label, entry, time.perf_counter() - t0,
-                      [f"{w.category.__name__}: {w.message}" for w in caught])
+                      [f"{w.category.__name__}: {w.message}" for w in caught], zones)
+
+
+def zone_entry(zone, with_sif: bool = False) -> dict:
+    """One contact zone as JSON-ready data: ends, kinds ("free" | "corner"), exponents of p at
+    each end (left: beta, right: alpha), index, load, and its SIFs if asked."""
+    out = {"ends": [zone.ends[0], zone.ends[1]], "kinds": list(zone.kinds),
+           "exponents": {"left": zone.beta, "right": zone.alpha}, "index": zone.kappa,
+           "load": zone.load}
+    if with_sif:
+        out["sif"] = dict(zone.sif)
+    return out
 
 
 def _auto_x(result) -> np.ndarray:
-    xl, xr = result.ends
+    """The contact (the outer ends of its zones) widened by AUTO_X_MARGIN of its length."""
+    xl, xr = result.zones[0].ends[0], result.zones[-1].ends[1]
     pad = AUTO_X_MARGIN * (xr - xl)
     return np.linspace(xl - pad, xr + pad, AUTO_X_POINTS)
 
 
 def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
     """A curve field at X; NaN at a singular contact end, where it is infinite."""
-    s = (X - result.center) / result.half_width          # as ContactResult does
     finite = np.ones(X.shape, dtype=bool)
-    if result.alpha < 0:
-        finite &= s != 1.0
-    if result.beta < 0:
-        finite &= s != -1.0
+    for z in result.zones:
+        if z.alpha < 0:
+            finite &= X != z.ends[1]
+        if z.beta < 0:
+            finite &= X != z.ends[0]
     values = np.full(X.shape, np.nan)
     values[finite] = getattr(result, name)(X[finite])
     return values
@@ -184,13 +218,24 @@ def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = F
     results = _map_in_order(run_case, cases, executor, progress, scene)
     for res, case in zip(results, cases):
         if case.speed in shared:
-            per_speed = shared[case.speed]
-            res.entry = {k: res.entry[k] if k in res.entry else per_speed[k]
-                         for k in ("inputs",) + scene.fields}
+            res.entry = _with_speed_fields(res.entry, shared[case.speed], scene.fields)
     messages = list(dict.fromkeys(f"{w.category.__name__}: {w.message}" for w in caught))
     for res in results:
         messages += [f"case {res.index} ({res.label}): {w}" for w in res.warnings]
     return SceneResult(scene, results, time.perf_counter() - t0, messages)
+
+
+def _with_speed_fields(entry: dict, per_speed: dict, fields) -> dict:
+    """The entry with the per-speed fields in their places among the scene's fields."""
+    out = {"inputs": entry["inputs"]}
+    for name in fields:
+        if name in per_speed:
+            out[name] = per_speed[name]
+        elif name in entry:
+            out[name] = entry[name]
+        elif name in ZONE_FIELDS and "zones" in entry:
+            out["zones"] = entry["zones"]
+    return out
 
 
 def _map_in_order(fn, cases, executor, progress, scene):

@@ -1,16 +1,14 @@
 """Scene vocabulary, errors and the parsed-scene data classes."""
 from __future__ import annotations
 
-import importlib
 import itertools
 import math
-import sys
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.polynomial.polynomial import polyval
 
 import contact
+from contact.registry import KINDS
 
 
 # --------------------------------------------------------------------------
@@ -19,9 +17,6 @@ import contact
 SECTIONS = ("title", "material", "punch", "motion", "outputs", "numerics")
 MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho")
 PRESETS = {"zhou2014": contact.zhou2014}
-PUNCH_DIMENSIONS = {"flat": ("half_width",), "triangular": ("slope",), "parabolic": ("radius",),
-                    "cylindrical": ("radius",), "profile": ()}
-PROFILE_KEYS = ("slope", "pieces", "breaks", "corners")
 PIECE_KEYS = ("from", "to", "coefficients")
 MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
 OUTPUT_KEYS = ("fields", "x")
@@ -31,7 +26,10 @@ METHODS = ("numeric", "closed_form")
 FREE = "free"
 
 #: Every field a scene may ask for, in the order they are documented.
-FIELDS = ("ends", "exponents", "sif", "pressure", "shear", "sigma_xx", "roots", "constants")
+FIELDS = ("ends", "exponents", "sif", "zones", "pressure", "shear", "sigma_xx", "roots",
+          "constants")
+#: Fields of one contact zone: with several zones a case lists ``zones`` in their place.
+ZONE_FIELDS = ("ends", "exponents", "sif")
 #: Fields sampled as curves on the x grid.
 CURVE_FIELDS = ("pressure", "shear", "sigma_xx")
 #: Fields that depend on (material, speed) only.
@@ -130,83 +128,38 @@ class MaterialSpec:
 
 
 @dataclass(frozen=True)
-class Piece:
-    """One polynomial piece of a piecewise slope: dv/dX = sum c_k X^k on [start, stop)."""
-    start: float              # -inf for the first piece
-    stop: float               # +inf for the last piece
-    coefficients: tuple
-
-
-@dataclass(frozen=True)
-class PolynomialSlope:
-    """dv/dX = sum c_k X^k (coefficients low to high); picklable."""
-    coefficients: tuple
-
-    def __call__(self, X):
-        X = np.asarray(X, dtype=float)
-        return polyval(X, self.coefficients) + np.zeros_like(X)
-
-
-@dataclass(frozen=True)
-class PiecewiseSlope:
-    """dv/dX given by polynomial pieces joined at ``joins`` (the first and last pieces extend
-    to -inf and +inf); picklable."""
-    joins: tuple
-    pieces: tuple             # coefficient tuples, one per piece
-
-    def __call__(self, X):
-        X = np.asarray(X, dtype=float)
-        which = np.searchsorted(np.asarray(self.joins, dtype=float), X, side="right")
-        out = np.zeros_like(X)
-        for k, coefficients in enumerate(self.pieces):
-            here = which == k
-            out[here] = polyval(X[here], coefficients)
-        return out
-
-
-@dataclass(frozen=True)
 class PunchSpec:
     """One punch (a single sweep point): plain data, rebuilt into a :class:`contact.Punch`
     wherever it is solved (so a case can travel to another process or a Dask worker).
 
-    ``dimension`` is the value of the kind's dimension key (half_width, slope or radius);
-    for a profile, exactly one of ``slope`` (coefficients or "module:function") and
-    ``pieces`` is set.
+    Attributes
+    ----------
+    kind : str
+        A key of :data:`contact.registry.KINDS`.
+    values : tuple of (key, value)
+        The kind's scene keys given for this case, parsed: numbers, tuples, "module:function"
+        strings, :class:`contact.registry.Piece` and :class:`contact.registry.Samples` (a
+        tabulated face travels as its samples, not as a file name).
+    base_dir : str or None
+        The scene file's directory (searched first for a "module:function").
     """
     kind: str
-    dimension: float | None = None
-    slope: tuple | str | None = None
-    pieces: tuple = ()
-    breaks: tuple = ()
-    corners: tuple = (None, None)
+    values: tuple = ()
     base_dir: str | None = None
+
+    def get(self, key, default=None):
+        """The value of a scene key, or ``default`` if the scene did not give it."""
+        return dict(self.values).get(key, default)
 
     @property
     def dimension_key(self):
-        keys = PUNCH_DIMENSIONS[self.kind]
+        """The kind's first dimension key (None for a profile)."""
+        keys = KINDS[self.kind].dimensions
         return keys[0] if keys else None
 
-    def slope_function(self):
-        """The profile's dv/dX as a callable (imports "module:function" slopes)."""
-        if self.pieces:
-            return PiecewiseSlope(tuple(p.start for p in self.pieces[1:]),
-                                  tuple(p.coefficients for p in self.pieces))
-        if isinstance(self.slope, str):
-            return import_callable(self.slope, self.base_dir)
-        return PolynomialSlope(tuple(self.slope))
-
     def build(self) -> contact.Punch:
-        if self.kind == "flat":
-            return contact.FlatPunch(half_width=self.dimension)
-        if self.kind == "triangular":
-            return contact.TriangularPunch(slope=self.dimension)
-        if self.kind == "parabolic":
-            return contact.ParabolicPunch(radius=self.dimension)
-        if self.kind == "cylindrical":
-            return contact.CylindricalPunch(radius=self.dimension)
-        joins = tuple(p.start for p in self.pieces[1:])
-        breaks = tuple(sorted(set(self.breaks) | set(joins)))
-        return contact.ProfilePunch(self.slope_function(), breaks=breaks, corners=self.corners)
+        """The punch (:meth:`contact.registry.PunchKind.build`)."""
+        return KINDS[self.kind].build(dict(self.values), self.base_dir)
 
 
 @dataclass(frozen=True)
@@ -297,6 +250,8 @@ class Scene:
                       "coefficients": list(p.coefficients)} for p in v]
             elif k == "corners":
                 v = [FREE if c is None else c for c in v]
+            elif k == "data":
+                v = v.source
             elif isinstance(v, tuple):
                 v = list(v)
             punch[k] = v
@@ -326,7 +281,7 @@ def _case_inputs(material: MaterialSpec, punch: dict, motion: dict) -> dict:
     inputs["friction"] = motion["friction"]
     inputs["direction"] = motion["direction"]
     inputs["load"] = motion["load"]
-    for key in PUNCH_DIMENSIONS[punch["kind"]]:
+    for key in KINDS[punch["kind"]].dimensions:
         inputs[key] = punch[key]
     if "velocity" in motion:
         inputs["velocity"] = motion["velocity"]
@@ -334,30 +289,6 @@ def _case_inputs(material: MaterialSpec, punch: dict, motion: dict) -> dict:
 
 
 def _punch_spec(punch: dict, base_dir) -> PunchSpec:
-    kind = punch["kind"]
-    if kind != "profile":
-        return PunchSpec(kind=kind, dimension=punch[PUNCH_DIMENSIONS[kind][0]])
-    slope = punch.get("slope")
-    return PunchSpec(kind=kind, slope=slope, pieces=tuple(punch.get("pieces", ())),
-                     breaks=tuple(punch.get("breaks", ())),
-                     corners=tuple(punch.get("corners", (None, None))), base_dir=base_dir)
-
-
-def import_callable(spec: str, base_dir=None):
-    """Import "module:function" (the scene's directory searched first); ImportError,
-    AttributeError or TypeError with a plain message if it cannot."""
-    module_name, _, name = spec.partition(":")
-    added = base_dir is not None and base_dir not in sys.path
-    if added:
-        sys.path.insert(0, base_dir)
-    try:
-        module = importlib.import_module(module_name)
-    finally:
-        if added:
-            sys.path.remove(base_dir)
-    fn = module
-    for part in name.split("."):
-        fn = getattr(fn, part)
-    if not callable(fn):
-        raise TypeError(f"{spec} is a {type(fn).__name__}, not a function")
-    return fn
+    kind = KINDS[punch["kind"]]
+    return PunchSpec(kind=kind.name, values=tuple((k, punch[k]) for k in kind.keys if k in punch),
+                     base_dir=base_dir)
