@@ -65,6 +65,8 @@ _GROWTH_MAX = 256.0    # ... squared after each step that works, up to this
 _CHECK_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)     # where p >= 0 is checked
 _INNER = np.abs(_CHECK_U) < 0.9                           # "inside a zone" for a split
 _MIN_RATIO = 1e-9      # the finest load step (relative) before giving up
+_TAIL = 1e-6           # n is doubled while the last coefficients exceed this (relative) ...
+_N_FOLLOW = 512        # ... up to this n per zone
 _EVENT_RTOL = 1e-6     # an event is located once the load left to it is below this (relative)
 _CLOSE = 1e-4          # ... or once the old zones fail this close to their last valid load
 _AIM = 0.99            # fraction of the way to an extrapolated event load that a step goes
@@ -370,17 +372,42 @@ def _level_placement(face, x0, seed, c, d):
     return (c1, d1) if lo <= c1 and d1 <= hi else (c0, c0 + width)
 
 
+def _basis_n(state):
+    n = state.solution.n
+    return int(n if np.ndim(n) == 0 else max(n))
+
+
+def _resolved(face, eq, state):
+    """(eq, state) with n doubled (up to ``_N_FOLLOW``) while the last Jacobi coefficients
+    of the solution exceed ``_TAIL`` of the largest: a face whose features are narrow
+    against the contact (a dip, a protrusion under a wide zone) needs a larger n for the
+    Newton steps and the checks to mean anything."""
+    while _resolution(state.solution) > _TAIL and 2 * eq.n <= _N_FOLLOW:
+        eq = replace(eq, n=2 * eq.n)
+        try:
+            state = _with(_solve_at(face, eq, list(state.zones), list(state.totals),
+                                    state.load, like=state), events=state.events)
+        except ContactLossError:
+            break
+    return eq, state
+
+
 def _advance(face, eq, state, P, direct=True):
     """From ``state`` to load P, stepping and handling events; the returned state carries
-    the events located on the way.  ``direct``: try one step to P first."""
+    the events located on the way.  ``direct``: try one step to P first.  n follows the
+    states' needs (:func:`_resolved`)."""
     if state.load == P:
         return _with(state, events=())
+    if state.solution is not None:
+        eq = replace(eq, n=max(eq.n, _basis_n(state)))
     events = []
     tried = None
     if state.load < P and direct:
         new = _try_step(face, eq, state, P)         # one step when the topology holds
         if new is not None:
-            return _with(new, events=())
+            eq, new = _resolved(face, eq, new)
+            if _resolution(new.solution) <= _TAIL or _inspect(face, eq, new).ok:
+                return _with(new, events=())
         tried = P
     growth = _GROWTH
     while state.load < P:
@@ -393,7 +420,7 @@ def _advance(face, eq, state, P, direct=True):
             growth = _GROWTH
         else:
             growth = min(growth * growth, _GROWTH_MAX)     # the prediction holds: go further
-        state = new
+        eq, state = _resolved(face, eq, new)
     return _with(state, events=tuple(events))
 
 
