@@ -65,8 +65,8 @@ _GROWTH_MAX = 256.0    # ... squared after each step that works, up to this
 _CHECK_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)     # where p >= 0 is checked
 _INNER = np.abs(_CHECK_U) < 0.9                           # "inside a zone" for a split
 _MIN_RATIO = 1e-9      # the finest load step (relative) before giving up
-_TAIL = 1e-6           # n is doubled while the last coefficients exceed this (relative) ...
-_N_FOLLOW = 512        # ... up to this n per zone
+_TAIL = 1e-6           # n is doubled while the last coefficients exceed this (relative),
+                       # up to ZoneEquations.n_max
 _EVENT_RTOL = 1e-6     # an event is located once the load left to it is below this (relative)
 _CLOSE = 1e-4          # ... or once the old zones fail this close to their last valid load
 _AIM = 0.99            # fraction of the way to an extrapolated event load that a step goes
@@ -378,18 +378,42 @@ def _basis_n(state):
 
 
 def _resolved(face, eq, state):
-    """(eq, state) with n doubled (up to ``_N_FOLLOW``) while the last Jacobi coefficients
+    """(eq, state) with n doubled (up to ``eq.n_max``) while the last Jacobi coefficients
     of the solution exceed ``_TAIL`` of the largest: a face whose features are narrow
     against the contact (a dip, a protrusion under a wide zone) needs a larger n for the
-    Newton steps and the checks to mean anything."""
-    while _resolution(state.solution) > _TAIL and 2 * eq.n <= _N_FOLLOW:
+    Newton steps and the checks to mean anything (the checks forgive the size of the
+    unresolved tail)."""
+    n_max = eq.n_max if eq.n_max is not None else eq.n
+    if any(z.c < x < z.d for x in eq.breaks for z in state.zones):
+        # with breaks inside, the series is the projection of a kinked slope (its tail does
+        # not fall; the pointwise correction carries the kinks): n stays
+        return eq, state
+    while _resolution(state.solution) > _TAIL and 2 * eq.n <= n_max:
         eq = replace(eq, n=2 * eq.n)
         try:
             state = _with(_solve_at(face, eq, list(state.zones), list(state.totals),
-                                    state.load, like=state), events=state.events)
+                                    state.load, like=state), events=state.events,
+                          _anchors=state._anchors, _growth=state._growth,
+                          _origin=state._origin, _previous=state._previous)
         except ContactLossError:
-            break
+            return eq, None
     return eq, state
+
+
+def _checked_resolved(face, eq, state):
+    """``state`` with its checks when it is valid, after n is raised to resolve it
+    (:func:`_resolved`; then checked again at that n), else None."""
+    checks = _inspect(face, eq, state)
+    if not checks.ok:
+        return None
+    eq2, solved = _resolved(face, eq, state)
+    if solved is None:
+        return None
+    if solved is not state:
+        checks = _inspect(face, eq2, solved)
+        if not checks.ok:
+            return None
+    return _with(solved, _checks=checks)
 
 
 def _advance(face, eq, state, P, direct=True):
@@ -405,9 +429,7 @@ def _advance(face, eq, state, P, direct=True):
     if state.load < P and direct:
         new = _try_step(face, eq, state, P)         # one step when the topology holds
         if new is not None:
-            eq, new = _resolved(face, eq, new)
-            if _resolution(new.solution) <= _TAIL or _inspect(face, eq, new).ok:
-                return _with(new, events=())
+            return _with(new, events=())
         tried = P
     growth = _GROWTH
     while state.load < P:
@@ -420,7 +442,8 @@ def _advance(face, eq, state, P, direct=True):
             growth = _GROWTH
         else:
             growth = min(growth * growth, _GROWTH_MAX)     # the prediction holds: go further
-        eq, state = _resolved(face, eq, new)
+        state = new
+        eq = replace(eq, n=max(eq.n, _basis_n(state)))      # n as the states needed it
     return _with(state, events=tuple(events))
 
 
@@ -449,9 +472,9 @@ def _try_step(face, eq, state, P, retry=True):
                             budget=budget)
         except ContactLossError:
             continue
-        checks = _inspect(face, eq, new)
-        if checks.ok:
-            return _with(new, _checks=checks)
+        checked = _checked_resolved(face, eq, new)
+        if checked is not None:
+            return checked
     return None
 
 
@@ -758,8 +781,7 @@ def _solve_candidate(face, eq, zones, totals, P, origin=0.0, young=()):
     growth = tuple(2.0 if j in young else None for j in range(len(new.zones)))
     new = _with(new, _anchors=anchors, _growth=growth,
                 _origin=origin if origin < P else 0.0)
-    checks = _inspect(face, eq, new)
-    return _with(new, _checks=checks) if checks.ok else None
+    return _checked_resolved(face, eq, new)
 
 
 def _bisect_event(face, eq, state, P):

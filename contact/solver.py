@@ -34,6 +34,7 @@ from .zones import ZoneEquations
 __all__ = ["solve", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
 
 _N_DEFAULT = 12
+_N_FOLLOW = 512    # the continuation raises n up to here to resolve its states (adaptive n)
 _N_MAX = 4096      # adaptive doubling stops here (n = 3072 from 12: ~0.07 s for a free-end profile)
 
 
@@ -206,7 +207,8 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
         n_use, adaptive = (n if n is not None else _N_DEFAULT), n is None
     face = punch.as_face()
     eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
-                       b=const.N11, load=loads[0], n=n_use)
+                       b=const.N11, load=loads[0], n=n_use,
+                       n_max=_N_FOLLOW if adaptive else None)
     states = follow_load(face, eq, loads)
     results, events = [], []
     n_start = eq.n
@@ -270,7 +272,7 @@ def _refine(face, eq, state, tol, punch, n_start):
     and the pressure at check points agree between n and 2n to ``tol``; the doubling starts
     from ``n_start`` (the state re-solved there first when it is larger than the state's)."""
     lo, hi = face.extent
-    eq = replace(eq, load=state.load)
+    eq = replace(eq, load=state.load, n=max(eq.n, _basis_size(state)))   # the state's own n
     m = len(state.zones)
     n_start = min(n_start, _N_MAX // 2, N_MAX_DENSE // (2 * m) if m > 1 else n_start)
     if n_start > eq.n:

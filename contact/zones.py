@@ -73,7 +73,9 @@ class ZoneEquations:
     """The equations of a set of zones for one face, material, friction and load.
 
     ``slope``: H'(X), vectorised; ``rise(x0, x1)``: H(x1) - H(x0); ``breaks``: X where H' or a
-    derivative jumps; ``a`` = N12 mu_f, ``b`` = N11; ``n``: Jacobi coefficients per zone."""
+    derivative jumps; ``a`` = N12 mu_f, ``b`` = N11; ``n``: Jacobi coefficients per zone;
+    ``n_max``: how far the continuation may raise n to resolve its states (None: n is
+    fixed, as the user gave it)."""
     slope: object
     rise: object
     breaks: tuple
@@ -81,6 +83,7 @@ class ZoneEquations:
     b: float
     load: float
     n: int = 32
+    n_max: int | None = None
 
     # -- the integral equation on the zones ---------------------------------------------
     def solve(self, zones, totals=None) -> sie.Solution:

@@ -352,3 +352,17 @@ def test_narrow_features_under_wide_contacts(name, speed, friction, direction):
     assert max(curve.zone_count) >= 2 and curve.zone_count[-1] == 1
     for res in curve:
         check_contact(res)
+
+
+def test_protrusion_between_the_merges_is_two_zones():
+    """At load 4.4 (c = 0.6, mu = 0.3) the protrusion face touches in two zones; a single
+    zone over both (what an unresolved n = 12 step accepted, p down to -0.26 inside) is
+    rejected once n resolves it.  No split event under a growing load."""
+    res = contact.solve(MAT, NARROW["protrusion"], load=4.4, speed=0.6, friction=0.3)
+    assert len(res.zones) == 2
+    check_contact(res)
+    curve = contact.load_curve(MAT, NARROW["protrusion"], [1.0, 4.4, 4.5, 20.0], speed=0.6,
+                               friction=0.3)
+    assert "split" not in [e.kind for e in curve.events]
+    for r in curve:
+        check_contact(r)
