@@ -174,7 +174,8 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
     >>> curve.zone_count.tolist()
     [2, 2, 1]
     """
-    _check_inputs(material, punch, 1.0, speed, friction, direction, "numeric", n, tol)
+    _, friction, direction, tol = _check_inputs(material, punch, 1.0, speed, friction,
+                                                direction, "numeric", n, tol)
     try:
         P = np.array(loads, dtype=float).ravel()
     except (TypeError, ValueError):
@@ -188,12 +189,9 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
         i = int(np.flatnonzero(np.diff(P) <= 0)[0])
         raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {P[i]!r} and "
                         f"loads[{i + 1}] = {P[i + 1]!r}")
-    friction = float(friction)
-    direction = int(direction)
     const = _surface_constants(material, speed, constants)
     mu_f = -direction * friction if friction != 0.0 else 0.0
-    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n,
-                    float(tol))
+    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol)
 
 
 def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
@@ -213,7 +211,7 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
     results, events = [], []
     n_start = eq.n
     for state in states:
-        events.extend(getattr(state, "events", ()))
+        events.extend(state.events)
         if adaptive:
             # a load curve starts each load's doubling at half the n the previous one needed
             state = _refine(face, eq, state, tol, punch, n_start)
