@@ -526,6 +526,12 @@ def _inspect(face, eq, state):
     return _Checks(ok, tuple(p_inner), tuple(p_where), valley, valley_where)
 
 
+def inspect_state(face, eq, state):
+    """Whether ``state`` passes :func:`_inspect` (p >= 0 in every zone, the gap >= 0 on the
+    face, to the resolution of its solution)."""
+    return _inspect(face, replace(eq, load=state.load, n=_basis_n(state)), state).ok
+
+
 def _vertex(g, X, k):
     """The lowest gap near sample k and where it is: the vertex of the parabola through the
     samples k - 1, k, k + 1 when they are evenly spaced (the sampled minimum is high by up

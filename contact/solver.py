@@ -23,8 +23,8 @@ import numpy as np
 from sie.assembly import N_MAX_DENSE
 
 from .constants import SurfaceConstants, surface_constants
-from .continuation import ZoneState, follow_load
-from .errors import (ContactInputError, DirectionError, FrictionError, LoadError,
+from .continuation import ZoneState, follow_load, inspect_state
+from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
                      check_finite)
 from .material import Orthotropic
 from .punches import Punch
@@ -214,7 +214,13 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
         events.extend(state.events)
         if adaptive:
             # a load curve starts each load's doubling at half the n the previous one needed
-            state = _refine(face, eq, state, tol, punch, n_start)
+            refined = _refine(face, eq, state, tol, punch, n_start)
+            if not inspect_state(face, eq, refined):
+                # the continuation's state passed its checks at a smaller n, within that n's
+                # truncation; at the refined n it violates p >= 0 or the gap: follow the
+                # load again at that n (its checks are then as tight as the answer)
+                refined = _refollow(face, eq, refined, loads, len(results), tol, punch)
+            state = refined
             n_start = max(eq.n, _basis_size(state) // 2)
         sol = state.solution
         zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
@@ -263,6 +269,22 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
         load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
         method="closed_form", solution=c)
+
+
+def _refollow(face, eq, refined, loads, i, tol, punch):
+    """The state at ``loads[i]`` from a continuation run at the n of ``refined`` (which
+    failed its checks), refined again; raises ContactLossError when it fails the checks
+    too."""
+    n_ref = _basis_size(refined)
+    eq_ref = replace(eq, n=n_ref, n_max=n_ref)
+    state = follow_load(face, eq_ref, loads[:i + 1])[-1]
+    state = _refine(face, eq_ref, state, tol, punch, n_ref)
+    if not inspect_state(face, eq_ref, state):
+        raise ContactLossError(
+            f"contact.solve: at load {loads[i]!r} the zones found violate p >= 0 or the "
+            f"gap >= 0 at n = {_basis_size(state)}; the face has features the solver cannot "
+            f"resolve at that n (pass a larger n=, or breaks= at its kinks)")
+    return state
 
 
 def _refine(face, eq, state, tol, punch, n_start):
