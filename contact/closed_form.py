@@ -249,6 +249,17 @@ class ClosedFormSolution:
                 p[end_mask] = np.inf if expo < 0 else 0.0
         return p[()] if p.ndim == 0 else p
 
+    def cauchy(self, z):
+        """(1/pi) int p(t) / (t - z) dt at complex z off the contact, through the Jacobi
+        series of d0 + d1 s (P_1^(alpha,beta)(s) = (alpha - beta)/2 + (alpha + beta + 2) s/2)
+        and :func:`sie.cauchy.jacobi_cauchy` (the transform is scale-free: t = m + L u)."""
+        from sie.cauchy import jacobi_cauchy
+        c1 = 2.0 * self.phi[1] / (self.alpha + self.beta + 2.0)
+        c0 = self.phi[0] - 0.5 * c1 * (self.alpha - self.beta)
+        mid = 0.5 * (self.ends[0] + self.ends[1])
+        return jacobi_cauchy([c0, c1], self.alpha, self.beta,
+                             (np.asarray(z) - mid) / self.half_length)
+
     # -- Hilbert transform of p -------------------------------------------------------------
     def _R(self, s):
         if self.kappa == 1:

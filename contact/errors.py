@@ -17,6 +17,8 @@ __all__ = [
     "PunchGeometryError",
     "ProfileCallableError",
     "ContactLossError",
+    "StressPointError",
+    "UnboundedStressError",
     "NearRayleighWarning",
     "check_finite",
 ]
@@ -58,6 +60,16 @@ class ContactLossError(ContactInputError):
     """The profile and load admit no single contact zone with p >= 0 (contact lost inside,
     or two separate zones would be needed)."""
 
+
+
+class StressPointError(ContactInputError):
+    """A point where the stress is asked for is not finite or lies outside the half-space
+    Y <= 0."""
+
+
+class UnboundedStressError(ContactInputError):
+    """A stress extremum asked for in a region that holds a singular contact end (where the
+    stresses are infinite)."""
 
 class NearRayleighWarning(UserWarning):
     """Speed within 1% of the Rayleigh speed: results valid but extremely sensitive to c."""

@@ -147,6 +147,43 @@ class Orthotropic:
         eta3 = np.sqrt(complex(small))
         return np.array([eta1, -eta1, eta3, -eta3], dtype=complex)
 
+    def decaying_roots(self, c) -> tuple[complex, complex]:
+        """(eta_1, eta_2) = (eta1, eta3) of :meth:`characteristic_roots`: the two roots with
+        Re eta > 0, whose modes exp(i k X + |k| eta Y) decay into the half-space Y < 0
+        (below the limiting speed).  Near a double root they are ill-conditioned (see
+        :meth:`characteristic_roots`); their sum and product are not
+        (:func:`contact.constants.root_symmetric_functions`)."""
+        r = self.characteristic_roots(c)
+        return complex(r[0]), complex(r[2])
+
+    def modal_vectors(self, c) -> np.ndarray:
+        """Displacement amplitudes (u, v) of the two decaying modes, for k > 0.
+
+        Returns
+        -------
+        numpy.ndarray of complex, shape (2, 2)
+            Row j: a null vector of the equations of motion for
+            u, v ~ exp(i k X + k eta_j Y) (Zhou et al. 2014, eqs. (2.4), (3.1)),
+
+                (C33 eta^2 - C11') u + i K eta v = 0,
+                i K eta u + (C22 eta^2 - C33') v = 0,
+
+            K = C12 + C33, C11' = C11 - C33 c^2, C33' = C33 (1 - c^2): the larger of
+            (K eta, i (C33 eta^2 - C11')) and (C22 eta^2 - C33', -i K eta) (parallel at a
+            root; each vanishes at one root when K = 0), scaled to unit length.
+        """
+        c = check_speed(c)
+        C11p = self.C11 - self.C33 * c * c
+        C33p = self.C33 * (1.0 - c * c)
+        K = self.C12 + self.C33
+        out = []
+        for eta in self.decaying_roots(c):
+            e1 = np.array([K * eta, 1j * (self.C33 * eta * eta - C11p)])
+            e2 = np.array([self.C22 * eta * eta - C33p, -1j * K * eta])
+            e = e1 if np.linalg.norm(e1) >= np.linalg.norm(e2) else e2
+            out.append(e / np.linalg.norm(e))
+        return np.array(out, dtype=complex)
+
 
 def _quadratic_roots(a: float, b: float, d: float) -> tuple[complex, complex]:
     """Roots of a x^2 + b x + d (a > 0), larger modulus first, without cancellation.

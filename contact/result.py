@@ -93,6 +93,8 @@ class ContactResult:
         K_right = lim (x_r - X)^(-alpha) p(X) / 2^beta, K_left = lim (X - x_l)^(-beta) p(X) / 2^alpha.
         One corner (eqs. (5.23), (5.33)): K = lim |X - x_corner|^(-e) p(X), e its exponent.
     constants : SurfaceConstants
+    material : Orthotropic
+        The material it was solved for (with ``constants``, what :meth:`stress` needs).
     mu_f : float
         Signed friction coefficient -direction * friction.
     """
@@ -108,6 +110,7 @@ class ContactResult:
     punch: Punch
     method: str = "numeric"
     solution: object = field(default=None, repr=False)
+    material: object = field(default=None, repr=False)
     _residual: float | None = field(default=None, repr=False)
 
     # -- the zones ---------------------------------------------------------------
@@ -205,6 +208,138 @@ class ContactResult:
         if self.mu_f == 0.0:
             return self.constants.N21 * p
         return self.constants.N21 * p + self.constants.N22 * self.mu_f * self.hilbert_pressure(X)
+
+
+    # the field under the surface ------------------------------------------
+    def stress(self, X, Y):
+        """The plane stresses at points (X, Y) of the half-space, Y <= 0 (moving frame).
+
+        sigma_c = Re{ KD_c D + KE_c E } from the Cauchy transform C(z) of p at
+        z_j = X - i eta_j Y over the two decaying roots eta_j of Zhou et al. 2014, eq. (3.1)
+        (D, E their divided difference and mean; the coefficients and their derivation:
+        :mod:`contact.subsurface`), smooth through repeated roots; q = mu_f p adds its
+        column only when mu_f != 0.  On Y = 0 the stresses are the tractions
+        (sigma_YY = -p, sigma_XY = -q) and :meth:`sigma_xx`.
+
+        Parameters
+        ----------
+        X, Y : array_like
+            Points (broadcast together), finite, Y <= 0.
+
+        Returns
+        -------
+        contact.subsurface.StressField
+            sigma_xx, sigma_yy, sigma_xy (tension positive) and the derived max_shear,
+            principal stresses and max_tension.
+
+        Raises
+        ------
+        StressPointError
+            NaN or infinite points, Y > 0.
+        ContactInputError
+            A point on Y = 0 at a singular contact end (the stress is infinite there).
+
+        Examples
+        --------
+        >>> import contact
+        >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+        ...                   load=0.01, speed=0.0)
+        >>> a, p0 = r.half_width, r.pressure(0.0)
+        >>> f = r.stress(0.0, -0.786 * a)               # Hertz: 0.300 p0 at 0.786 a
+        >>> round(float(f.max_shear / p0), 3)
+        0.3
+        """
+        from .subsurface import StressField, stress_points
+        X, Y = stress_points(X, Y)
+        out = [np.zeros(X.shape) for _ in range(3)]
+        below = Y < 0
+        if np.any(below):
+            modes = self._modes()
+            Cp = [np.asarray(self.solution.cauchy(z), dtype=complex)
+                  for z in modes.points(X[below], Y[below])]
+            for o, v in zip(out, modes.stresses(Cp, q_ratio=self.mu_f or None)):
+                o[below] = v
+        if not np.all(below):
+            on = ~below
+            p = self.pressure(X[on])
+            out[0][on] = self.sigma_xx(X[on])
+            out[1][on] = -p
+            out[2][on] = -self.mu_f * p
+        return StressField(X, Y, *out)
+
+    def _modes(self):
+        """The half-space modes at this speed (cached)."""
+        modes = self.__dict__.get("_modes_cache")
+        if modes is None:
+            if self.material is None:
+                raise ContactInputError("this ContactResult carries no material: the field "
+                                        "under the surface needs it (contact.solve sets it)")
+            from .subsurface import HalfSpaceModes
+            modes = HalfSpaceModes.of(self.material, self.constants.c)
+            self.__dict__["_modes_cache"] = modes
+        return modes
+
+    def stress_extrema(self, region=None, grid=(81, 61)):
+        """Where the in-plane maximum shear and the largest tension (sigma_1) peak.
+
+        A grid search over ``region`` then a polish of the best grid points
+        (:func:`contact.subsurface.field_extrema`).
+
+        Parameters
+        ----------
+        region : ((X_min, X_max), (Y_min, Y_max)), optional
+            Default: X within one half-span a of the contact's outer ends, 0 >= Y >= -3 a
+            (a = half of x_right of the last zone minus x_left of the first).
+        grid : (int, int)
+            Grid points in X and Y (>= 3 each).
+
+        Returns
+        -------
+        contact.subsurface.StressExtrema
+            ``max_shear`` and ``max_tension``: value, X, Y, depth and depth / a with a the
+            half-width of the zone nearest to X.
+
+        Raises
+        ------
+        UnboundedStressError
+            The region reaches Y = 0 at a singular (corner) end: the stresses are infinite
+            there (use the zones' SIFs, or a region with Y_max < 0).
+        ContactInputError
+            A region that is empty, not finite or above Y = 0; a grid below 3 x 3.
+        """
+        from .subsurface import UnboundedStressError, field_extrema
+        xl, xr = self.zones[0].ends[0], self.zones[-1].ends[1]
+        a = 0.5 * (xr - xl)
+        if region is None:
+            region = ((xl - a, xr + a), (-3.0 * a, 0.0))
+        try:
+            (x0, x1), (y0, y1) = region
+            x0, x1, y0, y1 = (float(v) for v in (x0, x1, y0, y1))
+        except (TypeError, ValueError):
+            raise ContactInputError(f"region must be ((X_min, X_max), (Y_min, Y_max)), got "
+                                    f"{region!r}") from None
+        if not all(np.isfinite([x0, x1, y0, y1])) or not (x0 < x1 and y0 < y1 <= 0.0):
+            raise ContactInputError(f"region must be finite with X_min < X_max and "
+                                    f"Y_min < Y_max <= 0, got {region!r}")
+        try:
+            nx, ny = (int(g) for g in grid)
+        except (TypeError, ValueError):
+            raise ContactInputError(f"grid must be (nx, ny), got {grid!r}") from None
+        if nx < 3 or ny < 3:
+            raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
+        if y1 == 0.0:
+            for z in self.zones:
+                for end, e in ((z.ends[0], z.beta), (z.ends[1], z.alpha)):
+                    if e < 0 and x0 <= end <= x1:
+                        raise UnboundedStressError(
+                            f"the stresses are infinite at the singular contact end "
+                            f"X = {end!r} (exponent {e:.6g}), inside the region {region!r}; "
+                            f"use the zones' SIFs there, or a region with Y_max < 0")
+
+        def half_width_at(X):
+            return min(self.zones, key=lambda z: max(z.ends[0] - X, X - z.ends[1], 0.0)).width / 2
+
+        return field_extrema(self.stress, ((x0, x1), (y0, y1)), half_width_at, (nx, ny))
 
 
 class _ClosedFormContactResult(ContactResult):

@@ -136,8 +136,10 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     const = _surface_constants(material, speed, constants)
     mu_f = -direction * friction if friction != 0.0 else 0.0
     if method == "closed_form":
-        return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f)
-    curve = _numeric(const, punch, [load], float(speed), friction, direction, mu_f, n, tol)
+        return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f,
+                                   material)
+    curve = _numeric(const, punch, [load], float(speed), friction, direction, mu_f, n, tol,
+                     material)
     return curve.results[0]
 
 
@@ -191,10 +193,11 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
                         f"loads[{i + 1}] = {P[i + 1]!r}")
     const = _surface_constants(material, speed, constants)
     mu_f = -direction * friction if friction != 0.0 else 0.0
-    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol)
+    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol,
+                    material)
 
 
-def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
+def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, material):
     """The numeric path: the zones along the loads, refined in n at each load."""
     a = const.N12 * mu_f if mu_f != 0.0 else 0.0        # no friction terms at mu = 0
     if n is None and punch.slope_degree is not None:
@@ -228,7 +231,8 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol):
         results.append(ContactResult(
             zones=zones, n=_basis_size(state), load_check=abs(integral - state.load) / state.load,
             constants=const, load=state.load, speed=speed, friction=friction,
-            direction=direction, mu_f=mu_f, punch=punch, method="numeric", solution=sol))
+            direction=direction, mu_f=mu_f, punch=punch, method="numeric", solution=sol,
+            material=material))
     return LoadCurve(loads=np.array(loads, dtype=float), results=tuple(results),
                      events=tuple(events))
 
@@ -250,7 +254,7 @@ def _zone_info(z, j, sol):
                        lambda end: sol.endpoint_value(end, interval=interval))
 
 
-def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
+def _closed_form_result(const, punch, load, speed, friction, direction, mu_f, material):
     from .registry import KINDS, closed_form_kinds
     kind = KINDS.get(punch.kind)
     solver = kind.closed_form_function() if kind is not None and type(punch) is kind.cls else None
@@ -268,7 +272,7 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f):
         zones=(zone,), n=2,
         load_check=c.load_check, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
-        method="closed_form", solution=c)
+        method="closed_form", solution=c, material=material)
 
 
 def _refollow(face, eq, refined, loads, i, tol, punch):

@@ -16,7 +16,7 @@ import matplotlib.image  # noqa: E402
 from validation import report  # noqa: E402
 
 FIGURES = ("fig1_flat.png", "fig2_triangular.png", "fig3_parabolic.png", "fig4_cylindrical.png",
-           "convergence.png", "work_precision.png")
+           "convergence.png", "work_precision.png", "subsurface_friction.png")
 
 
 @pytest.fixture(scope="module")
@@ -32,15 +32,15 @@ def test_every_section_builds(built):
     print(f"[report] quick build {elapsed:.1f} s, sections: "
           + ", ".join(f"{k}: {v:.1f} s" for k, v in ctx.timings.items()))
     assert ctx.failures == []
-    assert set(ctx.timings) == {str(k) for k in range(1, 10)}
-    assert set(ctx.headline) == {str(k) for k in range(1, 10)}
+    assert set(ctx.timings) == {str(k) for k in range(1, 11)}
+    assert set(ctx.headline) == {str(k) for k in range(1, 11)}
 
 
 def test_files_exist_and_figures_are_pictures(built):
     out, ctx, _ = built
     md = (out / "report.md").read_text(encoding="utf-8")
     html = (out / "index.html").read_text(encoding="utf-8")
-    for k in range(1, 10):
+    for k in range(1, 11):
         assert re.search(rf"^## {k}\. ", md, re.M), f"section {k} heading missing"
     referenced = set(re.findall(r"!\[[^\]]*\]\(([^)]+)\)", md))
     assert set(FIGURES) <= referenced
@@ -75,6 +75,10 @@ def test_headline_numbers_in_bounds(built):
     conv = st["convergence"]
     assert min(e for e in conv["rounded flat, breaks"][1] if e is not None) <= 1e-13
     assert min(e for e in conv["rounded flat, no breaks"][1] if e is not None) >= 1e-6
+    # subsurface: Hertz (Johnson eq. 4.49: 0.30028 p0 at 0.78615 a) and mu* of the sliding cylinder
+    sub = st["subsurface"]
+    assert abs(sub["tau"] - 0.3002831060) <= 1e-9 and abs(sub["depth"] - 0.7861514) <= 1e-5
+    assert sub["axis_err"] <= 1e-10 and 0.37 < sub["mu_star"] < 0.39
     # work-precision: the SIE core reaches 1e-12 and beats the scipy baseline at that n
     n, t_o, e_o, t_n, e_n = next(r for r in st["sie_wp"] if r[2] <= 1e-12)
     assert t_o < t_n

@@ -42,7 +42,8 @@ def scene(text: str, **kw):
 # --------------------------------------------------------------------------
 #: The shipped scenes that are not the paper's Figs 1-4: their number of cases and sweep.
 OTHER_SCENES = {"default": (1, ()), "profile_samples": (3, (("motion", "load"),)),
-                "w_face_two_zones": (2, (("motion", "friction"),))}
+                "w_face_two_zones": (2, (("motion", "friction"),)),
+                "subsurface_hertz": (1, ())}
 
 
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)

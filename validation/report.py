@@ -17,6 +17,7 @@ Sections (Zhou, Lee & Jang, Arch. Mech. 66 (2014); errata in /work/shared/notes/
  7. hard cases                                 (validation/report_numerics.py)
  8. the paper's Sec. 6 claims                  (validation/report_paper.py)
  9. peer: ContactMechanics on Hertz            (validation/report_peer.py)
+10. the stress field under the surface         (validation/report_subsurface.py)
 """
 from __future__ import annotations
 
@@ -37,7 +38,8 @@ from .report_doc import Doc
 
 OUT = Path(__file__).resolve().parent / "report"
 FIGURES = ("fig1_flat.png", "fig2_triangular.png", "fig3_parabolic.png", "fig4_cylindrical.png",
-           "convergence.png", "work_precision.png", "peer_hertz.png")
+           "convergence.png", "work_precision.png", "peer_hertz.png",
+           "subsurface_friction.png")
 
 
 @dataclass
@@ -55,6 +57,7 @@ def _sections():
     from . import report_numerics as RN
     from . import report_paper as RP
     from . import report_peer as RPe
+    from . import report_subsurface as RS
     return [
         ("1", RP.section_table1),
         ("2", RP.section_constants),
@@ -65,6 +68,7 @@ def _sections():
         ("7", RN.section_hard_cases),
         ("8", RP.section_claims),
         ("9", RPe.section_peer),
+        ("10", RS.section_subsurface),
     ]
 
 

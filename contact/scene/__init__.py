@@ -23,8 +23,11 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     direction = -1        # -1: slides toward -X (trailing edge on the right), +1: toward +X
 
     [outputs]             # fields: ends exponents sif zones pressure shear sigma_xx roots constants
+                          #         subsurface
     fields = ["ends", "exponents", "pressure", "sigma_xx", "sif"]
     x = { start = -0.8, stop = 0.8, num = 801 }   # where curves are sampled
+    # grid = { x = { start = -1, stop = 1, num = 161 }, y = { start = -1.5, stop = 0, num = 121 } }
+    #                   # where the "subsurface" field is mapped (Y <= 0); optional, see below
 
     [numerics]            # optional
     method = "numeric"    # or "closed_form" (the four classical punches only)
@@ -78,14 +81,41 @@ zone, left to right, ``{"ends": [xl, xr], "kinds": ["free" | "corner", ...], "ex
 case.  The table adds a ``zones`` column and shows the outer ends; the figures mark every
 zone.
 
+**The field under the surface** (``"subsurface"``, computed only when asked): the plane
+stresses sigma_xx, sigma_yy, sigma_xy (tension positive, stress unit S) of
+:meth:`contact.ContactResult.stress` mapped on a grid of the half-space Y <= 0 (the moving
+frame), with the in-plane maximum shear and the largest tension sigma_1 derived from them.
+The grid is ``[outputs] grid = { x = {start, stop, num}, y = {start, stop, num} }``
+(2 <= num <= 10000, start < stop, y.stop <= 0, nx * ny <= 4e6); either axis may be left out.
+By default, per case, scaled to its contact (x_left, x_right the outer ends of its zones,
+a = (x_right - x_left) / 2): X from x_left - a to x_right + a (161 points) and Y from -3 a up
+to the surface Y = 0 (121 points).  A grid point on Y = 0 that is exactly a singular (corner)
+contact end, where the stresses are infinite, is NaN (as the curve fields are there); every
+other point is finite.  result.json gets, per case, ``subsurface = {"max_shear": {value, X, Y,
+depth, half_width, depth_over_a}, "max_tension": {...}, "region": {"x": [X0, X1], "y": [Y0,
+Y1]}, "grid": {"x": {start, stop, num}, "y": {...}}}``: the largest max shear and tension in
+``region`` (:meth:`contact.ContactResult.stress_extrema`), which is the grid's extent except
+that, when the grid's top row is the surface and a singular end lies in its X range, Y1 is
+lowered to -1e-3 a (the stresses grow without bound toward a corner: such an extremum lies on
+that cut next to the corner, and the corner itself is characterised by its SIFs).  The maps go
+to ``subsurface.npz`` (keys ``cases``, ``labels``, and per case ``case{i}/x``, ``case{i}/y``
+(1-D) and ``case{i}/sigma_xx``, ``sigma_yy``, ``sigma_xy``, ``max_shear``, ``max_tension``
+((ny, nx) arrays, ``[k, j]`` at (x[j], y[k]))) and ``subsurface.csv`` (long format: columns
+case, X, Y, sigma_xx, sigma_yy, sigma_xy, max_shear, max_tension, one row per point); the
+figures ``subsurface_max_shear.png`` and ``subsurface_sigma_xx.png`` are filled contour maps,
+one panel per case (at most 6: a longer sweep shows 6 evenly spaced cases and says so in the
+title), with the contact zones drawn on the surface and the extremum marked.  The table adds
+``max shear @ depth/a``.
+
 **Sweeps**: any scalar under [motion], and a punch's dimensions (``half_width``, ``slope``,
 ``radius``), may be a list of values (a profile's lists -- ``slope``, ``breaks``, ``corners``,
 ``face`` -- are data, not sweeps).  The scene runs the Cartesian product, the key met first in
 the file varying slowest.
 
 **Only what is asked is computed**: curves are sampled only for the requested fields
-(sigma_XX only with ``"sigma_xx"``), the characteristic roots and surface constants for the
-``"roots"``/``"constants"`` fields once per speed, shared by every case at that speed.
+(sigma_XX only with ``"sigma_xx"``, the field under the surface only with ``"subsurface"``),
+the characteristic roots and surface constants for the ``"roots"``/``"constants"`` fields once
+per speed, shared by every case at that speed.
 
 **Errors**: every problem with a scene is a :class:`SceneError` (a ``ValueError``) naming the
 file, the key and what is allowed, raised by :func:`load_scene` before anything is solved.
@@ -94,11 +124,11 @@ from __future__ import annotations
 
 from .output import format_table, write_outputs
 from .parse import default_scene, load_scene, parse_scene_text
-from .run import CaseResult, SceneResult, run_case, run_scene
+from .run import CaseResult, SceneResult, SubsurfaceMap, run_case, run_scene
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,
-                   Numerics, PunchSpec, Scene, SceneError, XGrid)
+                   Numerics, PunchSpec, Scene, SceneError, SubsurfaceGrid, XGrid)
 
 __all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "SceneResult", "MaterialSpec",
-           "PunchSpec", "XGrid", "Numerics", "load_scene", "parse_scene_text", "default_scene",
-           "run_scene", "run_case", "write_outputs", "format_table", "DEFAULT_SCENE_TOML",
-           "FIELDS", "CURVE_FIELDS"]
+           "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics", "load_scene",
+           "parse_scene_text", "default_scene", "run_scene", "run_case", "write_outputs",
+           "format_table", "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]

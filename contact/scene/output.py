@@ -1,4 +1,5 @@
-"""Writing scene results: result.json, one CSV per curve field, figures, the console table."""
+"""Writing scene results: result.json, one CSV per curve field, figures, the console table;
+with the ``"subsurface"`` field also subsurface.npz, subsurface.csv and two contour maps."""
 from __future__ import annotations
 
 import csv
@@ -10,8 +11,12 @@ import numpy as np
 
 import contact
 
-from .run import CaseResult, SceneResult, _inputs_text
-from .spec import _fmt
+from .run import SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _inputs_text
+from .spec import SUBSURFACE_CUT, _fmt
+
+#: The subsurface figures show at most this many cases (small multiples); a longer sweep shows
+#: this many, evenly spaced through it (first and last included), and says so in the title.
+SUBSURFACE_PANELS = 6
 
 
 # --------------------------------------------------------------------------
@@ -20,6 +25,10 @@ from .spec import _fmt
 def write_outputs(result: SceneResult, out_dir) -> list[Path]:
     """Write result.json, one CSV per sampled curve field and its PNG figure into
     ``out_dir`` (created if needed).  PNGs need matplotlib; without it they are skipped.
+
+    With the ``"subsurface"`` field: subsurface.npz and subsurface.csv (the maps, see
+    :func:`write_subsurface_npz` and :func:`write_subsurface_csv`), and the contour maps
+    subsurface_max_shear.png and subsurface_sigma_xx.png (:func:`_write_subsurface_figures`).
 
     Returns
     -------
@@ -32,8 +41,168 @@ def write_outputs(result: SceneResult, out_dir) -> list[Path]:
     written[0].write_text(dumps_json(result.to_json()) + "\n", encoding="utf-8")
     for name in result.curve_fields:
         written.append(_write_csv(result, name, out / f"{name}.csv"))
+    maps = "subsurface" in result.scene.fields
+    if maps:
+        written.append(write_subsurface_npz(result, out / "subsurface.npz"))
+        written.append(write_subsurface_csv(result, out / "subsurface.csv"))
     png = _write_figures(result, out)
+    if maps:
+        png += _write_subsurface_figures(result, out)
     return written + png
+
+
+# --------------------------------------------------------------------------
+# the field under the surface: subsurface.npz, subsurface.csv, contour maps
+# --------------------------------------------------------------------------
+def write_subsurface_npz(result: SceneResult, path: Path) -> Path:
+    """subsurface.npz: the maps of every case (``numpy.load(path)``; no pickles).
+
+    Keys
+    ----
+    ``cases`` : int array, the case indices (as in result.json); ``labels`` : str array, their
+    labels; and for each case ``i``:
+
+    * ``case{i}/x`` (nx,) and ``case{i}/y`` (ny,): the grid's X and Y (Y <= 0, increasing: the
+      last row is the top, Y = 0 the surface);
+    * ``case{i}/sigma_xx``, ``case{i}/sigma_yy``, ``case{i}/sigma_xy``, ``case{i}/max_shear``,
+      ``case{i}/max_tension``: (ny, nx) arrays, ``[k, j]`` at (x[j], y[k]), tension positive,
+      in the scene's stress unit S; NaN only where a singular (corner) contact end meets the
+      surface (the stresses are infinite there).
+    """
+    arrays = {"cases": np.array([res.index for res in result.cases], dtype=int),
+              "labels": np.array([res.label for res in result.cases], dtype=str)}
+    for res in result.cases:
+        m = res.subsurface
+        arrays[f"case{res.index}/x"] = m.x
+        arrays[f"case{res.index}/y"] = m.y
+        for name in SUBSURFACE_QUANTITIES:
+            arrays[f"case{res.index}/{name}"] = m.quantity(name)
+    np.savez(path, **arrays)
+    return path
+
+
+def write_subsurface_csv(result: SceneResult, path: Path) -> Path:
+    """subsurface.csv, long format: a header ``case, X, Y, sigma_xx, sigma_yy, sigma_xy,
+    max_shear, max_tension`` and one row per grid point of every case (case by case, then Y
+    increasing, X increasing within a row of the grid); an empty cell where the map is NaN
+    (a singular contact end on the surface)."""
+    with open(path, "w", newline="", encoding="utf-8") as fh:
+        w = csv.writer(fh)
+        w.writerow(("case", "X", "Y") + SUBSURFACE_QUANTITIES)
+        for res in result.cases:
+            m = res.subsurface
+            X, Y = np.meshgrid(m.x, m.y)
+            cols = [X, Y] + [m.quantity(name) for name in SUBSURFACE_QUANTITIES]
+            table = np.column_stack([c.ravel() for c in cols])
+            rows = [[res.index] + r for r in table.tolist()]
+            for k in np.flatnonzero(~np.all(np.isfinite(table), axis=1)).tolist():
+                rows[k] = [res.index] + ["" if not math.isfinite(v) else v
+                                         for v in table[k].tolist()]
+            w.writerows(rows)
+    return path
+
+
+_MAP_LABELS = {"max_shear": "max shear (S)", "sigma_xx": r"$\sigma_{XX}$ (S)"}
+_MAP_MARKS = {"max_shear": ("max_shear", "max shear"), "sigma_xx": ("max_tension",
+                                                                    r"max tension $\sigma_1$")}
+
+
+def _subsurface_shown(cases) -> list:
+    """The cases the subsurface figures show: all, or SUBSURFACE_PANELS evenly spaced."""
+    if len(cases) <= SUBSURFACE_PANELS:
+        return list(cases)
+    picks = np.unique(np.round(np.linspace(0, len(cases) - 1, SUBSURFACE_PANELS)).astype(int))
+    return [cases[k] for k in picks]
+
+
+def _write_subsurface_figures(result: SceneResult, out: Path) -> list[Path]:
+    """subsurface_max_shear.png and subsurface_sigma_xx.png: filled contours of each shown case
+    (small multiples, one shared colour bar, at most SUBSURFACE_PANELS cases), the surface at
+    the top, each contact zone a thick segment on it and the extremum marked (the largest max
+    shear; on the sigma_XX map the largest tension sigma_1)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.ticker import MaxNLocator
+    except ImportError:
+        if not result.curve_fields:          # otherwise _write_figures has said so
+            result.warnings.append("matplotlib is not installed: no PNG figures written "
+                                   "(pip install 'sie-contact[plot]')")
+        return []
+    shown = _subsurface_shown(result.cases)
+    n = len(shown)
+    title = result.scene.title
+    if n < len(result.cases):
+        title += (f"\n{n} of {len(result.cases)} cases shown (evenly spaced; subsurface.npz "
+                  "has all)")
+    ncols = min(n, 3)
+    nrows = -(-n // ncols)
+    written = []
+    for name in ("max_shear", "sigma_xx"):
+        maps = [res.subsurface.quantity(name) for res in shown]
+        lo, hi = _robust_limits(maps, pad=False)
+        if name == "sigma_xx":
+            top = max(abs(lo), abs(hi)) or 1.0
+            lo, hi, cmap = -top, top, "RdBu_r"
+        else:
+            lo, hi, cmap = 0.0, (hi if hi > 0 else 1.0), "viridis"
+        full = np.concatenate([m[np.isfinite(m)] for m in maps] or [np.zeros(1)])
+        levels = MaxNLocator(nbins=20).tick_values(lo, hi)
+        lo, hi = levels[0], levels[-1]
+        extend = {(False, False): "neither", (True, False): "min", (False, True): "max",
+                  (True, True): "both"}[(bool(full.size and full.min() < lo),
+                                         bool(full.size and full.max() > hi))]
+        # a fixed layout (no layout engine: constrained layout would double the time)
+        pw, ph = (5.0, 3.8) if n == 1 else (3.3, 2.9)          # one panel's box, inches
+        width, height = 1.5 + pw * ncols, (1.0 if n < len(result.cases) else 0.8) + ph * nrows
+        left, right = 0.75 / width, 1.0 - 1.3 / width
+        bottom, top = 0.55 / height, 1.0 - (0.75 if n < len(result.cases) else 0.55) / height
+        fig, axes = plt.subplots(nrows, ncols, figsize=(width, height), squeeze=False,
+                                 gridspec_kw=dict(left=left, right=right, bottom=bottom, top=top,
+                                                  wspace=0.25, hspace=0.45))
+        quantity, mark_label = _MAP_MARKS[name]
+        for k, ax in enumerate(axes.flat):
+            if k >= n:
+                ax.set_axis_off()
+                continue
+            res = shown[k]
+            m = res.subsurface
+            cs = ax.contourf(m.x, m.y, maps[k], levels=levels, cmap=cmap, extend=extend)
+            for z in res.zones:
+                ax.plot(z["ends"], [0.0, 0.0], color="k", lw=4, solid_capstyle="butt",
+                        clip_on=False, zorder=5, label="contact" if k == 0 and z is res.zones[0]
+                        else None)
+            e = res.entry["subsurface"][quantity]
+            ax.plot([e["X"]], [e["Y"]], ls="none", marker="X", ms=8, mfc="w", mec="k",
+                    zorder=6, clip_on=False, label=mark_label if k == 0 else None)
+            ax.set_xlim(m.x[0], m.x[-1])
+            ax.set_ylim(m.y[0], m.y[-1])
+            ratio = (m.y[-1] - m.y[0]) / (m.x[-1] - m.x[0])
+            if 0.2 <= ratio <= 5.0:
+                ax.set_aspect("equal")
+            if len(result.cases) > 1:
+                ax.set_title(f"case {res.index}: {res.label}", fontsize=8)
+            if k % ncols == 0:
+                ax.set_ylabel("Y (L)")
+            if k // ncols == nrows - 1 or k + ncols >= n:
+                ax.set_xlabel("X (L)")
+            ax.xaxis.set_major_locator(MaxNLocator(5))         # few ticks: each costs time
+            ax.yaxis.set_major_locator(MaxNLocator(4))
+            ax.tick_params(labelsize=8)
+            if k == 0:
+                ax.legend(fontsize=7, loc="lower right", framealpha=0.8)
+        cax = fig.add_axes((right + 0.25 / width, bottom, 0.15 / width, top - bottom))
+        ticks = MaxNLocator(6).tick_values(lo, hi)
+        ticks = ticks[(ticks >= lo - 1e-9 * (hi - lo)) & (ticks <= hi + 1e-9 * (hi - lo))]
+        cbar = fig.colorbar(cs, cax=cax, ticks=ticks)
+        cbar.set_label(_MAP_LABELS[name])
+        fig.suptitle(title, fontsize=10)
+        path = out / f"subsurface_{name}.png"
+        fig.savefig(path, dpi=100)
+        plt.close(fig)
+        written.append(path)
+    return written
 
 
 def dumps_json(obj, indent: str = "  ", _level: int = 0) -> str:
@@ -137,16 +306,18 @@ def _mark_zone_ends(ax, zones, color):
     ax.plot(ends, np.zeros(len(ends)), ls="none", marker="|", ms=10, mew=1.2, color=color)
 
 
-def _robust_limits(curves) -> tuple:
+def _robust_limits(curves, pad=True) -> tuple:
     """y-limits that show the curves without letting a sampled singular spike flatten them:
-    the full range, unless it exceeds 4x the 1..99 percentile range."""
-    v = np.concatenate([c[np.isfinite(c)] for c in curves] or [np.zeros(1)])
+    the full range, unless it exceeds 4x the 1..99 percentile range (padded by 6 %, or not)."""
+    v = np.concatenate([c[np.isfinite(c)].ravel() for c in curves] or [np.zeros(1)])
     if v.size == 0:
         return -1.0, 1.0
     lo, hi = float(v.min()), float(v.max())
     plo, phi = (float(q) for q in np.percentile(v, [1, 99]))
     if hi - lo > 4.0 * (phi - plo) > 0:
         lo, hi = plo, phi
+    if not pad:
+        return lo, hi
     pad = 0.06 * (hi - lo) if hi > lo else max(1.0, abs(hi))
     return lo - pad, hi + pad
 
@@ -202,6 +373,9 @@ def format_table(result: SceneResult) -> str:
         if "sigma_xx" in e:
             row["min sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmin)
             row["max sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmax)
+        if "subsurface" in e:
+            ms = e["subsurface"]["max_shear"]
+            row["max shear @ depth/a"] = f"{ms['value']:.4g} @ {ms['depth_over_a']:.4g}"
         row["time ms"] = f"{1e3 * res.time_s:.1f}"
         for k in row:
             if k not in columns:
@@ -215,12 +389,22 @@ def format_table(result: SceneResult) -> str:
     if "sif" in scene.fields and any(r.get("K_left") == "-" or r.get("K_right") == "-"
                                      for r in rows):
         lines.append("  (SIF '-': that contact end is free, the pressure vanishes there)")
+    if any(_cut_below_surface(res.entry) for res in result.cases):
+        lines.append(f"  (max shear with a corner on the surface: searched below Y = "
+                     f"-{SUBSURFACE_CUT:g} a, the stresses being unbounded at the corner; "
+                     "result.json gives the region)")
     if any(len(res.zones) > 1 for res in result.cases):
         lines.append("  (several zones: x_left, x_right, alpha, beta, K_left, K_right are those "
                      "of the outer ends; result.json lists every zone)")
     lines.append(f"  total time {result.timing_s:.3f} s for {len(result.cases)} case(s); units as "
                  "in the scene (stresses in the stiffness unit, lengths in the punch's unit)")
     return "\n".join(lines)
+
+
+def _cut_below_surface(entry: dict) -> bool:
+    """Whether a case's subsurface extrema were searched below a cut under the surface."""
+    sub = entry.get("subsurface")
+    return sub is not None and sub["region"]["y"][1] != sub["grid"]["y"]["stop"]
 
 
 def _fixed_inputs(result: SceneResult) -> dict:

@@ -14,9 +14,10 @@ from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Sa
                               closed_form_kinds, import_callable)
 from contact.samples import MIN_SAMPLES, SampleError, face_from_samples
 
-from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, MATERIAL_KEYS, METHODS,
-                   MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS, PIECE_KEYS,
-                   PRESETS, PunchSpec, SECTIONS, Scene, SceneError, XGrid, X_KEYS)
+from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, GRID_KEYS, MATERIAL_KEYS,
+                   METHODS, MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS,
+                   PIECE_KEYS, PRESETS, PunchSpec, SECTIONS, SUBSURFACE_MAX_POINTS,
+                   SUBSURFACE_POINTS, Scene, SceneError, SubsurfaceGrid, XGrid, X_KEYS)
 
 
 # --------------------------------------------------------------------------
@@ -115,7 +116,7 @@ class _Parser:
         material = self.material(self.table(data, "material", required=True))
         punch = self.punch(self.table(data, "punch", required=True))
         motion = self.motion(self.table(data, "motion", required=True), material)
-        fields, x = self.outputs(self.table(data, "outputs"))
+        fields, x, grid = self.outputs(self.table(data, "outputs"))
         numerics = self.numerics(self.table(data, "numerics"), punch["kind"])
         order = [name for name in data if name in ("punch", "motion")]
         sweepable = {"punch": KINDS[punch["kind"]].dimensions, "motion": MOTION_KEYS}
@@ -126,7 +127,7 @@ class _Parser:
             title = _default_title(punch)
         scene = Scene(source=self.source, title=title, material=material, punch=punch,
                       motion=motion, fields=fields, x=x, numerics=numerics, sweep=sweep,
-                      base_dir=self.base_dir)
+                      base_dir=self.base_dir, grid=grid)
         self.check_cases(scene)
         return scene
 
@@ -429,26 +430,62 @@ class _Parser:
         x = None
         if "x" in table:
             x = self.x_grid(table["x"])
-        return tuple(seen), x
+        grid = None
+        if "grid" in table:
+            grid = self.grid(table["grid"])
+            if "subsurface" not in seen:
+                raise self.error("outputs.grid", 'is the map of the "subsurface" field, which '
+                                 "outputs.fields does not ask for",
+                                 'add "subsurface" to outputs.fields, or remove outputs.grid')
+        return tuple(seen), x, grid
 
-    def x_grid(self, value) -> XGrid:
-        allowed = "{ start = X0, stop = X1, num = N } with X0 < X1 and 2 <= N <= 1000000"
+    def x_grid(self, value, key="outputs.x", max_num=1_000_000, name="X") -> XGrid:
+        allowed = (f"{{ start = {name}0, stop = {name}1, num = N }} with {name}0 < {name}1 and "
+                   f"2 <= N <= {max_num}")
+        if name == "Y":
+            allowed += " and Y1 <= 0 (the half-space is Y <= 0; depth = -Y)"
         if not isinstance(value, dict):
-            raise self.error("outputs.x", f"must be a table, got {_describe(value)}", allowed)
-        self.check_keys(value, X_KEYS, "outputs.x")
+            raise self.error(key, f"must be a table, got {_describe(value)}", allowed)
+        self.check_keys(value, X_KEYS, key)
         for k in X_KEYS:
             if k not in value:
-                raise self.error(f"outputs.x.{k}", "is missing", allowed)
-        start = self.number("outputs.x.start", value["start"], allowed)
-        stop = self.number("outputs.x.stop", value["stop"], allowed)
+                raise self.error(f"{key}.{k}", "is missing", allowed)
+        start = self.number(f"{key}.start", value["start"], allowed)
+        stop = self.number(f"{key}.stop", value["stop"], allowed)
         num = value["num"]
-        if isinstance(num, bool) or not isinstance(num, int) or not 2 <= num <= 1_000_000:
-            raise self.error("outputs.x.num", f"must be an integer in [2, 1000000], got "
+        if isinstance(num, bool) or not isinstance(num, int) or not 2 <= num <= max_num:
+            raise self.error(f"{key}.num", f"must be an integer in [2, {max_num}], got "
                              f"{_describe(num)}", allowed)
         if not start < stop:
-            raise self.error("outputs.x", f"start = {start!r} is not below stop = {stop!r}",
-                             allowed)
+            raise self.error(key, f"start = {start!r} is not below stop = {stop!r}", allowed)
         return XGrid(start, stop, num)
+
+    def grid(self, value) -> SubsurfaceGrid:
+        """``[outputs] grid = { x = {start, stop, num}, y = {start, stop, num} }``: where the
+        "subsurface" field is mapped; an axis left out keeps its default (scaled to the
+        contact)."""
+        allowed = ("{ x = { start = X0, stop = X1, num = NX }, y = { start = Y0, stop = Y1, "
+                   "num = NY } }, either axis optional (default: scaled to the contact), "
+                   "Y1 <= 0")
+        if not isinstance(value, dict):
+            raise self.error("outputs.grid", f"must be a table, got {_describe(value)}", allowed)
+        self.check_keys(value, GRID_KEYS, "outputs.grid")
+        if not value:
+            raise self.error("outputs.grid", "is empty", allowed)
+        x = y = None
+        if "x" in value:
+            x = self.x_grid(value["x"], "outputs.grid.x", 10_000)
+        if "y" in value:
+            y = self.x_grid(value["y"], "outputs.grid.y", 10_000, name="Y")
+            if y.stop > 0:
+                raise self.error("outputs.grid.y.stop", f"{y.stop!r} is above the surface Y = 0",
+                                 "Y1 <= 0 (the half-space is Y <= 0; depth = -Y)")
+        nx = x.num if x is not None else SUBSURFACE_POINTS[0]
+        ny = y.num if y is not None else SUBSURFACE_POINTS[1]
+        if nx * ny > SUBSURFACE_MAX_POINTS:
+            raise self.error("outputs.grid", f"{nx} x {ny} = {nx * ny} points is too many",
+                             f"nx * ny <= {SUBSURFACE_MAX_POINTS}")
+        return SubsurfaceGrid(x, y)
 
     def numerics(self, table: dict, kind: str) -> Numerics:
         self.check_keys(table, NUMERICS_KEYS, "numerics")

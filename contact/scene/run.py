@@ -16,7 +16,8 @@ import contact
 import sie
 
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, MaterialSpec,
-                   SPEED_FIELDS, Scene, UNITS, ZONE_FIELDS, _fmt)
+                   SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
+                   SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
 
 
 # --------------------------------------------------------------------------
@@ -40,6 +41,10 @@ class CaseResult:
     zones : list of dict
         Every contact zone (:func:`zone_entry`), whatever the fields asked: the table and the
         figures mark them.
+    subsurface : SubsurfaceMap or None
+        The stress map under the surface, when the scene asks for ``"subsurface"`` (its
+        extrema are in ``entry["subsurface"]``; the maps go to subsurface.npz/.csv, not to
+        result.json).
     """
     index: int
     label: str
@@ -47,11 +52,40 @@ class CaseResult:
     time_s: float
     warnings: list = field(default_factory=list)
     zones: list = field(default_factory=list)
+    subsurface: "SubsurfaceMap | None" = None
 
     def curve(self, name):
         """(x, values) of a sampled curve field."""
         c = self.entry[name]
         return c["x"], c["values"]
+
+
+@dataclass
+class SubsurfaceMap:
+    """The plane stresses of one case on its grid (tension positive, stress unit S).
+
+    Attributes
+    ----------
+    x : ndarray, shape (nx,)
+        X of the grid's columns.
+    y : ndarray, shape (ny,)
+        Y of its rows (<= 0; the last row is the top).
+    field : contact.StressField
+        The stresses on the grid, arrays of shape (ny, nx), ``[i, j]`` at (x[j], y[i]); NaN
+        only at a singular (corner) contact end on Y = 0, where the stresses are infinite (as
+        the curve fields are NaN there).
+    """
+    x: np.ndarray
+    y: np.ndarray
+    field: contact.StressField
+
+    def quantity(self, name: str) -> np.ndarray:
+        """One of sigma_xx, sigma_yy, sigma_xy, max_shear, max_tension."""
+        return getattr(self.field, name)
+
+
+#: The maps written per case (subsurface.npz, subsurface.csv), in this order.
+SUBSURFACE_QUANTITIES = ("sigma_xx", "sigma_yy", "sigma_xy", "max_shear", "max_tension")
 
 
 @dataclass
@@ -119,6 +153,7 @@ def run_case(case: Case) -> CaseResult:
         several = len(result.zones) > 1
         with_sif = "sif" in case.fields
         X = None
+        stress_map = None
         for name in case.fields:
             if name == "zones" or (several and name in ZONE_FIELDS):
                 if "zones" not in entry:
@@ -133,9 +168,73 @@ def run_case(case: Case) -> CaseResult:
                 if X is None:
                     X = case.x.points() if case.x is not None else _auto_x(result)
                 entry[name] = {"x": X, "values": _sample(result, name, X)}
+            elif name == "subsurface":
+                entry[name], stress_map = subsurface(result, case.grid)
         zones = [zone_entry(z, False) for z in result.zones]
     return CaseResult(case.index, case.label, entry, time.perf_counter() - t0,
-                      [f"{w.category.__name__}: {w.message}" for w in caught], zones)
+                      [f"{w.category.__name__}: {w.message}" for w in caught], zones,
+                      stress_map)
+
+
+def subsurface_axes(result, grid: SubsurfaceGrid | None = None) -> tuple:
+    """The (x, y) axes of a case's map: the scene's ``[outputs] grid``, an axis it leaves out
+    scaled to the contact: with x_left, x_right the outer ends of the zones and
+    a = (x_right - x_left) / 2, X from x_left - a to x_right + a (161 points) and Y from -3 a
+    to 0 (121 points)."""
+    xl, xr = result.zones[0].ends[0], result.zones[-1].ends[1]
+    a = 0.5 * (xr - xl)
+    gx = grid.x if grid is not None and grid.x is not None else XGrid(
+        xl - SUBSURFACE_MARGIN * a, xr + SUBSURFACE_MARGIN * a, SUBSURFACE_POINTS[0])
+    gy = grid.y if grid is not None and grid.y is not None else XGrid(
+        -SUBSURFACE_DEPTH * a, 0.0, SUBSURFACE_POINTS[1])
+    return gx, gy
+
+
+def singular_ends(result) -> list:
+    """The X of every contact end where the pressure is unbounded (exponent < 0)."""
+    return [end for z in result.zones
+            for end, e in ((z.ends[0], z.beta), (z.ends[1], z.alpha)) if e < 0]
+
+
+def subsurface(result, grid: SubsurfaceGrid | None = None) -> tuple:
+    """The ``"subsurface"`` field of one case: (JSON entry, :class:`SubsurfaceMap`).
+
+    The map: :meth:`contact.ContactResult.stress` on the grid of :func:`subsurface_axes`
+    (NaN at a point on Y = 0 that is exactly a singular contact end, where the stresses are
+    infinite).  The entry: the largest in-plane maximum shear and the largest tension
+    (:meth:`contact.ContactResult.stress_extrema`) in the map's region, each with its value,
+    X, Y, depth = -Y, the half-width a of the nearest zone and depth / a; ``region`` is where
+    they were searched -- the map's extent, except that when the map's top row is the surface
+    and a singular end lies in its X range, the top is lowered to Y = -1e-3 a (a the contact's
+    half-span; half the map's depth if that is shallower): the stresses grow without bound
+    toward the corner, so such an extremum sits on that cut, next to the corner (its SIFs
+    characterise the corner itself).  ``grid`` echoes the map's axes.
+    """
+    gx, gy = subsurface_axes(result, grid)
+    xs, ys = gx.points(), gy.points()
+    X, Y = np.meshgrid(xs, ys)                             # (ny, nx)
+    singular = singular_ends(result)
+    infinite = (Y == 0.0) & np.isin(X, singular)
+    comps = [np.full(X.shape, np.nan) for _ in range(3)]
+    ok = ~infinite
+    field_ = result.stress(X[ok], Y[ok])
+    for c, v in zip(comps, (field_.sigma_xx, field_.sigma_yy, field_.sigma_xy)):
+        c[ok] = v
+    stress_map = SubsurfaceMap(xs, ys, contact.StressField(X, Y, *comps))
+
+    x0, x1, y0, y1 = gx.start, gx.stop, gy.start, gy.stop
+    if y1 == 0.0 and any(x0 <= e <= x1 for e in singular):
+        a = 0.5 * (result.zones[-1].ends[1] - result.zones[0].ends[0])
+        y1 = -min(SUBSURFACE_CUT * a, 0.5 * (y1 - y0))
+    ext = result.stress_extrema(((x0, x1), (y0, y1)))
+    entry = {}
+    for name in ("max_shear", "max_tension"):
+        e = getattr(ext, name)
+        entry[name] = {"value": e.value, "X": e.X, "Y": e.Y, "depth": e.depth,
+                       "half_width": e.half_width, "depth_over_a": e.depth_over_a}
+    entry["region"] = {"x": [x0, x1], "y": [y0, y1]}
+    entry["grid"] = {"x": gx.echo(), "y": gy.echo()}
+    return entry, stress_map
 
 
 def zone_entry(zone, with_sif: bool = False) -> dict:

@@ -19,15 +19,16 @@ MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho")
 PRESETS = {"zhou2014": contact.zhou2014}
 PIECE_KEYS = ("from", "to", "coefficients")
 MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
-OUTPUT_KEYS = ("fields", "x")
+OUTPUT_KEYS = ("fields", "x", "grid")
 X_KEYS = ("start", "stop", "num")
+GRID_KEYS = ("x", "y")
 NUMERICS_KEYS = ("method", "n", "tol")
 METHODS = ("numeric", "closed_form")
 FREE = "free"
 
 #: Every field a scene may ask for, in the order they are documented.
 FIELDS = ("ends", "exponents", "sif", "zones", "pressure", "shear", "sigma_xx", "roots",
-          "constants")
+          "constants", "subsurface")
 #: Fields of one contact zone: with several zones a case lists ``zones`` in their place.
 ZONE_FIELDS = ("ends", "exponents", "sif")
 #: Fields sampled as curves on the x grid.
@@ -37,6 +38,17 @@ SPEED_FIELDS = ("roots", "constants")
 DEFAULT_FIELDS = ("ends", "exponents", "pressure")
 AUTO_X_POINTS = 401
 AUTO_X_MARGIN = 0.5            # automatic x: the contact widened by this fraction of its length
+#: The field under the surface (``"subsurface"``): the default map, in units of the contact's
+#: half-span a = (x_right - x_left) / 2 (outer ends of its zones): X from x_left - a to
+#: x_right + a, Y from -3 a to 0, with this many points (nx, ny).
+SUBSURFACE_POINTS = (161, 121)
+SUBSURFACE_MARGIN = 1.0        # X: the contact widened by this many a on each side
+SUBSURFACE_DEPTH = 3.0         # Y: from -SUBSURFACE_DEPTH a up to the surface
+#: Where the extrema are searched when a singular (corner) end lies under the map's top row
+#: on Y = 0: the map's region with its top lowered to Y = -SUBSURFACE_CUT a (the stresses are
+#: infinite at the corner itself).
+SUBSURFACE_CUT = 1e-3
+SUBSURFACE_MAX_POINTS = 4_000_000   # nx * ny of a user's grid
 
 UNITS = {
     "statement": "consistent units: every stress (material C11..C33, pressure, shear, sigma_xx) "
@@ -44,6 +56,10 @@ UNITS = {
                  "length unit L, as given in the scene",
     "load": "S*L (force per unit length of the punch)",
     "pressure, shear, sigma_xx": "S",
+    "subsurface: sigma_xx, sigma_yy, sigma_xy, max_shear, max_tension, value": "S",
+    "subsurface: X, Y, depth, half_width, grid, region": "L (Y <= 0 is the half-space, "
+                                                         "depth = -Y)",
+    "subsurface: depth_over_a": "dimensionless",
     "ends, x, half_width, radius": "L",
     "slope (triangular), speed, friction, exponents": "dimensionless",
     "sif": "S*L^(-e), e the exponent at that end (definitions: contact.ContactResult.sif)",
@@ -172,6 +188,22 @@ class XGrid:
     def points(self) -> np.ndarray:
         return np.linspace(self.start, self.stop, self.num)
 
+    def echo(self) -> dict:
+        return {"start": self.start, "stop": self.stop, "num": self.num}
+
+
+@dataclass(frozen=True)
+class SubsurfaceGrid:
+    """Where the field under the surface is mapped (``[outputs] grid``): numpy.linspace
+    along X and along Y (Y <= 0); an axis left None takes its default, scaled to each case's
+    contact (:data:`SUBSURFACE_POINTS`)."""
+    x: XGrid | None = None
+    y: XGrid | None = None
+
+    def echo(self) -> dict:
+        return {"x": None if self.x is None else self.x.echo(),
+                "y": None if self.y is None else self.y.echo()}
+
 
 @dataclass(frozen=True)
 class Numerics:
@@ -196,6 +228,7 @@ class Case:
     fields: tuple
     x: XGrid | None
     numerics: Numerics
+    grid: SubsurfaceGrid | None = None
 
     @property
     def speed(self) -> float:
@@ -219,6 +252,7 @@ class Scene:
     numerics: Numerics
     sweep: tuple
     base_dir: str | None = None
+    grid: SubsurfaceGrid | None = None
 
     def cases(self) -> list[Case]:
         """The Cartesian product of the swept values, the first swept key varying slowest."""
@@ -232,7 +266,8 @@ class Scene:
             out.append(Case(index=index, label=label or self.title,
                             inputs=_case_inputs(self.material, punch, motion),
                             material=self.material, punch=_punch_spec(punch, self.base_dir),
-                            fields=self.fields, x=self.x, numerics=self.numerics))
+                            fields=self.fields, x=self.x, numerics=self.numerics,
+                            grid=self.grid))
         return out
 
     def _section(self, name):
@@ -256,10 +291,12 @@ class Scene:
                 v = list(v)
             punch[k] = v
         motion = {k: list(v) if isinstance(v, tuple) else v for k, v in self.motion.items()}
-        x = None if self.x is None else {"start": self.x.start, "stop": self.x.stop,
-                                          "num": self.x.num}
+        x = None if self.x is None else self.x.echo()
+        outputs = {"fields": list(self.fields), "x": x}
+        if self.grid is not None:
+            outputs["grid"] = self.grid.echo()
         return {"title": self.title, "material": material, "punch": punch, "motion": motion,
-                "outputs": {"fields": list(self.fields), "x": x},
+                "outputs": outputs,
                 "numerics": {"method": self.numerics.method, "n": self.numerics.n,
                              "tol": self.numerics.tol}}
 

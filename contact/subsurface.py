@@ -1,0 +1,475 @@
+"""The stress field under the surface of the moving orthotropic half-space.
+
+Conventions as for the surface (:mod:`contact.constants`): the half-space is Y < 0 in the
+frame moving with the punch, the tractions on Y = 0 are sigma_YY = -p, sigma_XY = -q, and
+C(z) = (1/pi) int p(t) / (t - z) dt is the Cauchy transform of a traction.
+
+Derivation
+----------
+A Fourier component exp(i k X + |k| eta Y) of the displacements solves the steady equations of
+motion (Zhou, Lee & Jang 2014, eqs. (2.4)-(3.1))
+
+    C11' u_XX + C33 u_YY + K v_XY = 0,    K u_XY + C33' v_XX + C22 v_YY = 0,
+    C11' = C11 - C33 c^2,  C33' = C33 (1 - c^2),  K = C12 + C33,
+
+when eta is a root of eq. (3.1); it decays as Y -> -inf for the two roots eta_1, eta_2 with
+Re eta > 0.  For k > 0 the modal vector is e(eta) = e1 + w e2, the null vectors of the two
+rows of the modal equations,
+
+    e1 = (K eta, i (C33 eta^2 - C11')),    e2 = (C22 eta^2 - C33', -i K eta),
+
+(parallel at a root; each vanishes at one root when K = 0, so w in {1, -1, i} is chosen to
+keep e away from zero at both), and gives the stresses
+(sigma_XX, sigma_YY, sigma_XY) = k b (i S_xx(eta), i S_yy(eta), S_xy(eta)) exp(i k z) with
+z = X - i eta Y and S = S^(1) + w S^(2), cubic polynomials in eta:
+
+    S_xx^(1) = C12 C33 eta^3 + (C11 K - C12 C11') eta,
+    S_yy^(1) = C22 C33 eta^3 + (C12 K - C22 C11') eta,
+    S_xy^(1) = C12 C33 eta^2 + C33 C11',
+    S_xx^(2) = (C11 C22 - C12 K) eta^2 - C11 C33',
+    S_yy^(2) = -C22 C33 eta^2 - C12 C33',
+    S_xy^(2) = C22 C33 eta^3 + C33 (K - C33') eta.
+
+The two traction conditions fix the amplitudes:
+
+    k b_1 = ( i S_xy(eta_2) p^ + S_yy(eta_2) q^) / Delta,
+    k b_2 = -(i S_xy(eta_1) p^ + S_yy(eta_1) q^) / Delta,
+    Delta = S_yy(eta_1) S_xy(eta_2) - S_yy(eta_2) S_xy(eta_1).
+
+The k < 0 half is the complex conjugate (the field is real), and for Im z > 0
+(1/2 pi) int_0^inf f^(k) exp(i k z) dk = C_f(z) / (2 i), so, with A_c,f(a, b) = S_c(a) g_f(b),
+g_p = i S_xy, g_q = S_yy and t_c = 1, 1, -i for c = XX, YY, XY,
+
+    sigma_c(X, Y) = Re{ t_c sum_{f = p, q} [A_c,f(eta_1, eta_2) C_f(z_1)
+                                           - A_c,f(eta_2, eta_1) C_f(z_2)] / Delta },
+    z_j = X - i eta_j Y.
+
+On Y = 0 this gives sigma_YY = -p, sigma_XY = -q and sigma_XX = N21 p + N22 Hc[q] (the
+surface constants; checked in the tests).
+
+Repeated roots.  With eta_{1,2} = eta_m +- delta, numerator and Delta are antisymmetric in
+the two roots; dividing both by eta_1 - eta_2 = 2 delta,
+
+    [A(e1, e2) C(z1) - A(e2, e1) C(z2)] / Delta
+        = [A_s D + 2 A_a' E] / Delta',
+    A_s = (A(e1, e2) + A(e2, e1)) / 2,    A_a' = (A(e1, e2) - A(e2, e1)) / (2 (e1 - e2)),
+    Delta' = Delta / (e1 - e2),
+    D = (C(z1) - C(z2)) / (e1 - e2),    E = (C(z1) + C(z2)) / 2,
+
+where A_a' and Delta' are polynomial divided differences (g(b) f[a, b] - f(b) g[a, b] for
+f(a) g(b) - f(b) g(a), no cancellation).  Everything is even in delta, so it depends on the
+roots only through eta_m = S / 2 and delta^2 = S^2 / 4 - P (S = eta_1 + eta_2,
+P = eta_1 eta_2 from the coefficients of eq. (3.1), well conditioned where the roots
+themselves are not).  D and E are even analytic functions of delta; when
+|delta| < h = 1e-3 eta_m (the isotropic static case has delta = 0: D -> -i Y C'(z)) they are
+interpolated linearly in delta^2 between delta = h and delta = i h (delta^2 = +-h^2, so real
+and complex pairs are treated alike; error ~ (h / eta_m)^4, rounding ~ eps eta_m / h, both
+about 1e-12 relative), so the field is smooth through the repeated root.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .constants import surface_constants
+from .errors import ContactInputError, MaterialError, StressPointError, UnboundedStressError
+from .material import Orthotropic
+
+__all__ = ["HalfSpaceModes", "StressField", "StressExtrema", "Extremum", "half_space_stress",
+           "field_extrema", "StressPointError", "UnboundedStressError"]
+
+#: |delta| below this fraction of eta_m: the repeated-root form (interpolation in delta^2)
+_NEAR = 1e-3
+
+
+@dataclass(frozen=True)
+class StressField:
+    """Plane stresses at points (X, Y) of the half-space (tension positive).
+
+    Attributes
+    ----------
+    X, Y : ndarray
+        The points (Y <= 0), broadcast to one shape.
+    sigma_xx, sigma_yy, sigma_xy : ndarray
+        The in-plane stress components at the points.
+    """
+    X: np.ndarray
+    Y: np.ndarray
+    sigma_xx: np.ndarray
+    sigma_yy: np.ndarray
+    sigma_xy: np.ndarray
+
+    @property
+    def mean(self) -> np.ndarray:
+        """(sigma_xx + sigma_yy) / 2, the centre of Mohr's circle."""
+        return 0.5 * (self.sigma_xx + self.sigma_yy)
+
+    @property
+    def max_shear(self) -> np.ndarray:
+        """In-plane maximum shear stress, the radius of Mohr's circle,
+        sqrt(((sigma_xx - sigma_yy) / 2)^2 + sigma_xy^2)."""
+        return np.hypot(0.5 * (self.sigma_xx - self.sigma_yy), self.sigma_xy)
+
+    @property
+    def principal(self) -> tuple:
+        """(sigma_1, sigma_2), the in-plane principal stresses, sigma_1 >= sigma_2."""
+        m, r = self.mean, self.max_shear
+        return m + r, m - r
+
+    @property
+    def max_tension(self) -> np.ndarray:
+        """The largest principal stress sigma_1 (positive where the material is in tension)."""
+        return self.mean + self.max_shear
+
+    @property
+    def principal_angle(self) -> np.ndarray:
+        """Angle (radians, from +X) of the direction of sigma_1."""
+        return 0.5 * np.arctan2(2.0 * self.sigma_xy, self.sigma_xx - self.sigma_yy)
+
+
+def _modal_forms(material: Orthotropic, c: float) -> tuple:
+    """Coefficients (of eta^0..eta^3) of (S_xx, S_yy, S_xy) for the two null vectors of the
+    modal equations, (u, v) = (K eta, i (C33 eta^2 - C11')) (first row) and
+    (C22 eta^2 - C33', -i K eta) (second row); module docstring."""
+    C11, C12, C22, C33 = material.C11, material.C12, material.C22, material.C33
+    C11p = C11 - C33 * c * c
+    C33p = C33 * (1.0 - c * c)
+    K = C12 + C33
+    first = {"xx": np.array([0.0, C11 * K - C12 * C11p, 0.0, C12 * C33]),
+             "yy": np.array([0.0, C12 * K - C22 * C11p, 0.0, C22 * C33]),
+             "xy": np.array([C33 * C11p, 0.0, C12 * C33, 0.0])}
+    second = {"xx": np.array([-C11 * C33p, 0.0, C11 * C22 - C12 * K, 0.0]),
+              "yy": np.array([-C12 * C33p, 0.0, -C22 * C33, 0.0]),
+              "xy": np.array([0.0, C33 * (K - C33p), 0.0, C33 * C22])}
+    vec1 = (np.array([0.0, K, 0.0, 0.0]), 1j * np.array([-C11p, 0.0, C33, 0.0]))
+    vec2 = (np.array([-C33p, 0.0, C22, 0.0]), -1j * np.array([0.0, K, 0.0, 0.0]))
+    return first, second, vec1, vec2
+
+
+def _stress_polynomials(material: Orthotropic, c: float) -> dict:
+    """S_xx, S_yy, S_xy of the modal vector e1 + w e2, w in {1, -1, i} chosen so that it is
+    farthest from vanishing at both roots.  e1 and e2 are parallel at a root (both null
+    vectors of a rank-one matrix), and each vanishes at one root when C12 + C33 = 0; their
+    ratio r is real for real roots (w = i: |1 + i r| >= 1) and conjugate over a complex
+    pair (w = +-1 serves both)."""
+    first, second, v1, v2 = _modal_forms(material, c)
+    roots = material.decaying_roots(c)
+
+    def quality(w):
+        q = np.inf
+        for eta in roots:
+            e1 = np.array([_poly(v1[0], eta), _poly(v1[1], eta)])
+            e2 = np.array([_poly(v2[0], eta), _poly(v2[1], eta)])
+            size = np.linalg.norm(e1) + np.linalg.norm(e2)
+            q = min(q, np.linalg.norm(e1 + w * e2) / size if size > 0 else 0.0)
+        return q
+    w = max((1.0, -1.0, 1j), key=quality)
+    return {k: first[k] + w * second[k] for k in first}
+
+
+def _poly(coef, x):
+    return coef[0] + x * (coef[1] + x * (coef[2] + x * coef[3]))
+
+
+def _divided(coef, em, d2):
+    """f[a, b] = (f(a) - f(b)) / (a - b) of a cubic at a, b = em +- delta, from delta^2."""
+    return coef[1] + 2.0 * em * coef[2] + (3.0 * em * em + d2) * coef[3]
+
+
+@dataclass(frozen=True)
+class HalfSpaceModes:
+    """The two decaying modes of the moving orthotropic half-space, combined into the
+    coefficients of the stress field (module docstring).
+
+    sigma_c = Re{ sum_f (KD[c, f] D_f + KE[c, f] E_f) } with D_f, E_f the divided difference
+    and the mean of the Cauchy transform C_f of traction f (p or q) at z_1, z_2.
+
+    Attributes
+    ----------
+    eta_mid : float
+        (eta_1 + eta_2) / 2 > 0.
+    delta_sq : float
+        ((eta_1 - eta_2) / 2)^2: > 0 for two real roots, < 0 for a complex pair, ~0 repeated.
+    KD, KE : ndarray, complex, shape (3, 2)
+        Rows XX, YY, XY; columns p, q.
+    """
+    eta_mid: float
+    delta_sq: float
+    KD: np.ndarray
+    KE: np.ndarray
+
+    @classmethod
+    def of(cls, material: Orthotropic, c: float) -> "HalfSpaceModes":
+        """The modes at relative speed c (0 <= c < c_R).
+
+        Raises
+        ------
+        SpeedError
+            c outside [0, c_R).
+        MaterialError
+            A double root with two independent modal vectors (C12 + C33 = 0 and
+            C11'/C33 = C33'/C22), where the form used here does not apply.
+        """
+        const = surface_constants(material, c)
+        em = 0.5 * const.eta_sum
+        d2 = 0.25 * const.eta_sum ** 2 - const.eta_product
+        delta = np.sqrt(complex(d2))
+        a, b = em + delta, em - delta
+        S = _stress_polynomials(material, const.c)
+        g = {"p": (1j * S["xy"], True), "q": (S["yy"], False)}
+        dyy, dxy = _divided(S["yy"], em, d2), _divided(S["xy"], em, d2)
+        delta_p = _poly(S["xy"], b) * dyy - _poly(S["yy"], b) * dxy
+        size = abs(_poly(S["xy"], b) * dyy) + abs(_poly(S["yy"], b) * dxy)
+        if not abs(delta_p) > 1e-10 * size:
+            raise MaterialError(
+                "the two decaying modes coincide with independent modal vectors (C12 + C33 = 0 "
+                "and C11' / C33 = C33' / C22: u and v decouple with one wave speed); the "
+                "field is then a sum of two scalar half-space problems, not implemented here")
+        KD = np.zeros((3, 2), dtype=complex)
+        KE = np.zeros((3, 2), dtype=complex)
+        for i, (comp, t) in enumerate((("xx", 1.0), ("yy", 1.0), ("xy", -1j))):
+            f = S[comp]
+            fa, fb, fab = _poly(f, a), _poly(f, b), _divided(f, em, d2)
+            for j, key in enumerate(("p", "q")):
+                gc = g[key][0]
+                ga, gb, gab = _poly(gc, a), _poly(gc, b), _divided(gc, em, d2)
+                A_s = 0.5 * (fa * gb + fb * ga)
+                A_a = 0.5 * (gb * fab - fb * gab)
+                KD[i, j] = t * A_s / delta_p
+                KE[i, j] = t * 2.0 * A_a / delta_p
+        KD.flags.writeable = False
+        KE.flags.writeable = False
+        return cls(eta_mid=em, delta_sq=d2, KD=KD, KE=KE)
+
+    @property
+    def repeated(self) -> bool:
+        """Whether the roots are within the repeated-root tolerance of each other."""
+        return abs(self.delta_sq) < (_NEAR * self.eta_mid) ** 2
+
+    def _etas(self):
+        """The root pairs (eta_m + d, eta_m - d) whose z the Cauchy transforms are wanted at:
+        the roots themselves, or eta_m +- h and eta_m +- i h near a repeated root."""
+        if self.repeated:
+            h = _NEAR * self.eta_mid
+            return ((self.eta_mid + h, self.eta_mid - h, h),
+                    (self.eta_mid + 1j * h, self.eta_mid - 1j * h, 1j * h))
+        delta = np.sqrt(complex(self.delta_sq))
+        return ((self.eta_mid + delta, self.eta_mid - delta, delta),)
+
+    def points(self, X, Y) -> list:
+        """The complex points z = X - i eta Y at which the Cauchy transforms are needed
+        (two or four arrays of the shape of X, Y)."""
+        out = []
+        for e1, e2, _ in self._etas():
+            out += [X - 1j * e1 * Y, X - 1j * e2 * Y]
+        return out
+
+    def stresses(self, Cp, Cq=None, q_ratio=None):
+        """sigma_XX, sigma_YY, sigma_XY from the Cauchy transforms at :meth:`points`.
+
+        Cp : list of arrays, C_p at each of the points; Cq : the same for q, or None; and
+        ``q_ratio``: q = q_ratio p (then Cq is not needed).
+        """
+        KD, KE = self.KD, self.KE
+        if Cq is None:
+            r = 0.0 if q_ratio is None else q_ratio
+            kd = KD[:, 0] + r * KD[:, 1]
+            ke = KE[:, 0] + r * KE[:, 1]
+            D, E = self._DE(Cp)
+            return tuple((kd[i] * D + ke[i] * E).real for i in range(3))
+        Dp, Ep = self._DE(Cp)
+        Dq, Eq = self._DE(Cq)
+        return tuple((KD[i, 0] * Dp + KE[i, 0] * Ep + KD[i, 1] * Dq + KE[i, 1] * Eq).real
+                     for i in range(3))
+
+    def _DE(self, C):
+        etas = self._etas()
+        if len(etas) == 1:
+            (_, _, delta), = etas
+            return (C[0] - C[1]) / (2.0 * delta), 0.5 * (C[0] + C[1])
+        (_, _, h), _ = etas
+        D1, E1 = (C[0] - C[1]) / (2.0 * h), 0.5 * (C[0] + C[1])          # delta^2 = h^2
+        D2, E2 = (C[2] - C[3]) / (2j * h), 0.5 * (C[2] + C[3])           # delta^2 = -h^2
+        w = self.delta_sq / (h * h)               # linear in delta^2 through -h^2 and h^2
+        return 0.5 * (D1 + D2) + 0.5 * w * (D1 - D2), 0.5 * (E1 + E2) + 0.5 * w * (E1 - E2)
+
+
+def stress_points(X, Y):
+    """X, Y as float arrays of one shape; raise StressPointError unless finite with Y <= 0."""
+    try:
+        X, Y = np.broadcast_arrays(np.asarray(X, dtype=float), np.asarray(Y, dtype=float))
+    except (TypeError, ValueError) as exc:
+        raise StressPointError(f"X and Y must be real arrays of broadcastable shapes: {exc}") \
+            from None
+    if not (np.all(np.isfinite(X)) and np.all(np.isfinite(Y))):
+        raise StressPointError("X and Y must be finite (got NaN or inf)")
+    if np.any(Y > 0):
+        raise StressPointError(
+            f"the half-space is Y <= 0; got Y up to {float(np.max(Y))!r} (depth below the "
+            f"surface is -Y)")
+    return np.array(X), np.array(Y)
+
+
+def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
+                      q_ratio=None) -> StressField:
+    """The stresses at points Y < 0 of the half-space under surface tractions p and q.
+
+    Parameters
+    ----------
+    material : Orthotropic
+    c : float
+        Relative speed of the tractions, 0 <= c < c_R.
+    X, Y : array_like
+        Points, Y < 0 (broadcast together).
+    cauchy_p : callable
+        z -> C_p(z) = (1/pi) int p(t) / (t - z) dt at complex z with Im z > 0.
+    cauchy_q : callable, optional
+        The same for q (sigma_XY(X, 0) = -q).
+    q_ratio : float, optional
+        q = q_ratio p (instead of ``cauchy_q``; Coulomb friction q = mu_f p).
+
+    Returns
+    -------
+    StressField
+
+    Raises
+    ------
+    StressPointError
+        Points not finite, or Y >= 0 (the surface itself is the traction: see
+        :meth:`contact.ContactResult.stress`).
+
+    Examples
+    --------
+    A Flamant line load P at the origin, C_p(z) = -P / (pi z), isotropic and static:
+
+    >>> import numpy as np, contact
+    >>> from contact.subsurface import half_space_stress
+    >>> f = half_space_stress(contact.Isotropic(1.0, 0.3), 0.0, 0.0, -2.0,
+    ...                       lambda z: -1.0 / (np.pi * z))
+    >>> float(f.sigma_yy * np.pi)     # -(2P/pi) / depth
+    -1.0
+    """
+    X, Y = stress_points(X, Y)
+    if np.any(Y == 0):
+        raise StressPointError("Y must be < 0 here (on Y = 0 the stresses are the tractions)")
+    if cauchy_q is not None and q_ratio is not None:
+        raise ContactInputError("give cauchy_q or q_ratio, not both")
+    modes = HalfSpaceModes.of(material, c)
+    Z = modes.points(X, Y)
+    Cp = [np.asarray(cauchy_p(z), dtype=complex) for z in Z]
+    Cq = None if cauchy_q is None else [np.asarray(cauchy_q(z), dtype=complex) for z in Z]
+    sxx, syy, sxy = modes.stresses(Cp, Cq, q_ratio)
+    return StressField(X, Y, sxx, syy, sxy)
+
+
+@dataclass(frozen=True)
+class Extremum:
+    """Where a stress quantity is largest in a region.
+
+    Attributes
+    ----------
+    quantity : str
+        "max_shear" or "max_tension" (:class:`StressField`).
+    value : float
+        Its largest value there.
+    X, Y : float
+        Where (Y <= 0).
+    depth : float
+        -Y.
+    half_width : float
+        The half-width a of the contact zone nearest to X.
+    depth_over_a : float
+        depth / half_width.
+    """
+    quantity: str
+    value: float
+    X: float
+    Y: float
+    depth: float
+    half_width: float
+    depth_over_a: float
+
+
+@dataclass(frozen=True)
+class StressExtrema:
+    """The largest in-plane maximum shear and the largest tension in a region.
+
+    Attributes
+    ----------
+    max_shear, max_tension : Extremum
+    region : ((X_min, X_max), (Y_min, Y_max))
+    """
+    max_shear: Extremum
+    max_tension: Extremum
+    region: tuple
+
+
+def field_extrema(stress, region, half_width_at, grid=(81, 61)) -> StressExtrema:
+    """Largest max-shear and largest tension of ``stress(X, Y) -> StressField`` in ``region``.
+
+    A grid search (``grid`` = (nx, ny) points, ends included), then each quantity's best
+    grid maxima (the largest, and any other local maximum within 10 % of it) are polished by
+    zooming: 7 x 7 points on a window of one grid cell about the best point, re-centred on
+    the best of them and shrunk 3-fold, 24 times (to 3.5e-12 of a cell; the window stays
+    inside the region), all windows of a round in one call of ``stress``.
+
+    Parameters
+    ----------
+    stress : callable
+    region : ((X_min, X_max), (Y_min, Y_max)), Y_max <= 0
+    half_width_at : callable
+        X -> the half-width used to scale the depth.
+    grid : (int, int)
+        At least (3, 3).
+    """
+    (x0, x1), (y0, y1) = region
+    nx, ny = grid
+    xs, ys = np.linspace(x0, x1, nx), np.linspace(y0, y1, ny)
+    Xg, Yg = np.meshgrid(xs, ys, indexing="ij")
+    field = stress(Xg, Yg)
+    names = ("max_shear", "max_tension")
+    starts = []                                   # (quantity, X, Y, value)
+    for name in names:
+        V = getattr(field, name)
+        cand = _grid_maxima(V, 4)
+        top = V[cand[0]]
+        for ij in cand:
+            if ij == cand[0] or V[ij] >= top - 0.1 * abs(top):
+                starts.append([name, Xg[ij], Yg[ij], V[ij]])
+    wx, wy = (x1 - x0) / (nx - 1), (y1 - y0) / (ny - 1)
+    t = np.linspace(-1.0, 1.0, 7)
+    TX, TY = (a.ravel() for a in np.meshgrid(t, t, indexing="ij"))
+    for _ in range(24):
+        Xp = np.concatenate([np.clip(s[1] + wx * TX, x0, x1) for s in starts])
+        Yp = np.concatenate([np.clip(s[2] + wy * TY, y0, y1) for s in starts])
+        f = stress(Xp, Yp)
+        for k, st in enumerate(starts):
+            V = getattr(f, st[0])[k * TX.size:(k + 1) * TX.size]
+            j = int(np.argmax(V))
+            if V[j] >= st[3]:
+                st[1], st[2], st[3] = Xp[k * TX.size + j], Yp[k * TX.size + j], V[j]
+        wx, wy = wx / 3.0, wy / 3.0
+    out = {}
+    for name in names:
+        _, X, Y, val = max((s for s in starts if s[0] == name), key=lambda s: s[3])
+        a = half_width_at(X)
+        depth = abs(float(Y))
+        out[name] = Extremum(name, float(val), float(X), float(Y), depth, float(a),
+                             depth / float(a))
+    return StressExtrema(out["max_shear"], out["max_tension"], ((x0, x1), (y0, y1)))
+
+
+def _grid_maxima(V, k):
+    """Indices of the k largest local maxima of a 2-D grid (>= their 8 neighbours)."""
+    P = np.pad(V, 1, constant_values=-np.inf)
+    core = P[1:-1, 1:-1]
+    is_max = np.ones(V.shape, dtype=bool)
+    for di in (-1, 0, 1):
+        for dj in (-1, 0, 1):
+            if di or dj:
+                is_max &= core >= P[1 + di:P.shape[0] - 1 + di, 1 + dj:P.shape[1] - 1 + dj]
+    idx = np.argwhere(is_max)
+    order = np.argsort(-V[is_max], kind="stable")[:k]
+    return [tuple(idx[o]) for o in order]
