@@ -83,10 +83,10 @@ def _friction_table(doc, quick):
     doc.table(["mu", "subsurface peak / p0", "its X / a", "its depth / a",
                "largest max shear / p0", "where (depth / a)"], rows)
     doc.p(f"mu* = {mu_star:.6f} (our field's extrema; tests/test_subsurface_api.py finds the "
-          "same mu* to 1e-6 from McEwen's closed form by an independent maximisation). Johnson "
-          "(1985, sec. 7.2, figs. 7.5-7.6) shows the peak below the surface at mu = 0.2 and on "
-          "the surface at mu = 0.4 for this line contact; the 'about 0.3' often quoted is for the "
-          "sphere (Hamilton & Goodman 1966, von Mises).")
+          "same mu* to 1e-6 from McEwen's closed form by an independent maximisation). "
+          "Published maps of this line contact bracket it: the peak is below the surface at "
+          "mu = 0.1 and on it at mu = 0.4 (Rules of Thumb for Mechanical Engineers, 'Effect of "
+          "friction on contact stress', figs. 8-9, after Smith & Liu 1953).")
     return mu_star, best
 
 
