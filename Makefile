@@ -28,6 +28,7 @@ bench: $(STAMP)
 	$(PY) -m validation.bench_sie
 	$(PY) -m validation.bench_sie2
 	$(PY) -m validation.bench_contact
+	$(PY) -m validation.bench_sweep
 
 report: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[report]"

@@ -1,13 +1,15 @@
 """The ``contact`` command: run scenes, print Table 1 and the surface constants.
 
-    contact run [SCENE.toml] [--out DIR] [--jobs N] [--quiet] [--scheduler ADDRESS]
+    contact run [SCENE.toml] [--out DIR] [--jobs N] [--quiet] [--no-figures]
+                [--scheduler ADDRESS]
     contact table1 [--digits D]
     contact constants --speed C [SCENE.toml]
     contact punches
 
 A user error (a bad scene, an inadmissible speed, a profile that loses contact) prints one
 message naming the file, the key and what is allowed, and exits with status 2 (a bad scene or
-argument) or 1 (a case that failed while it was solved) -- never a traceback.
+argument, or an --out that cannot be written, found before anything is solved) or 1 (a case
+that failed while it was solved) -- never a traceback.
 """
 from __future__ import annotations
 
@@ -50,7 +52,8 @@ def build_parser() -> argparse.ArgumentParser:
         "run", help="run a scene (or the embedded default) and write result.json, CSV, PNG",
         description="Run a scene file (without one: the embedded default, the paper's material "
                     "and a cylindrical punch at c = 0.6, mu = 0.3), print a short table and "
-                    "write result.json, one CSV per sampled curve and PNG figures into --out.")
+                    "write result.json, sweep.csv (one row per case), one CSV per sampled "
+                    "curve and PNG figures into --out.")
     run.add_argument("scene", nargs="?", metavar="SCENE.toml",
                      help="scene file (default: the embedded default scene)")
     run.add_argument("--out", default="contact-out", metavar="DIR",
@@ -62,6 +65,8 @@ def build_parser() -> argparse.ArgumentParser:
                           "extra: pip install 'sie-contact[dask]')")
     run.add_argument("--quiet", action="store_true",
                      help="no progress bar, no table, no list of files written")
+    run.add_argument("--no-figures", dest="figures", action="store_false",
+                     help="write no PNG figures (as [outputs] figures = false in the scene)")
     run.set_defaults(handler=cmd_run)
 
     t1 = sub.add_parser(
@@ -133,12 +138,18 @@ def _error(message: str):
 # --------------------------------------------------------------------------
 def cmd_run(args) -> int:
     scene = scenes.load_scene(args.scene) if args.scene else scenes.default_scene()
+    try:                                       # before anything is solved
+        scenes.check_out_dir(args.out)
+    except OSError as exc:
+        raise UsageError(f"--out {args.out}: {exc}") from None
     with _executor(args.jobs, args.scheduler) as executor:
         result = scenes.run_scene(scene, executor=executor, progress=not args.quiet)
     if not args.quiet:
-        print(scenes.format_table(result))
+        print(scenes.format_table(result), flush=True)
     try:
-        written = scenes.write_outputs(result, args.out)
+        written = scenes.write_outputs(result, args.out,
+                                       figures=None if args.figures else False,
+                                       progress=not args.quiet)
     except OSError as exc:
         raise OSError(f"cannot write the outputs into --out {args.out}: {exc}") from None
     for message in result.warnings:

@@ -60,7 +60,7 @@ def test_default_run_writes_into_contact_out(default_run):
     _, cwd = default_run
     out = cwd / "contact-out"
     names = {p.name for p in out.iterdir()}
-    assert names == {"result.json", "pressure.csv", "sigma_xx.csv", "pressure.png",
+    assert names == {"result.json", "sweep.csv", "pressure.csv", "sigma_xx.csv", "pressure.png",
                      "sigma_xx.png"}
     for png in ("pressure.png", "sigma_xx.png"):
         assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -78,17 +78,19 @@ def test_result_json_shape(default_run):
     assert echo["motion"] == {"load": 0.01, "speed": 0.6, "friction": 0.3, "direction": -1}
     assert echo["punch"] == {"kind": "cylindrical", "radius": 100.0}
     (case,) = result["cases"]
-    assert list(case) == ["inputs", "ends", "exponents", "pressure", "sigma_xx", "sif"]
+    assert list(case) == ["inputs", "ends", "exponents", "pressure", "sigma_xx", "sif",
+                          "diagnostics"]
     assert case["inputs"] == {"speed": 0.6, "friction": 0.3, "direction": -1, "load": 0.01,
                               "radius": 100.0}
+    assert set(case["diagnostics"]) == {"n", "residual", "load_check"}
     for absent in set(FIELDS) - set(case):       # one zone: ends, exponents, sif, no zones
         assert absent in ("zones", "shear", "roots", "constants", "subsurface")
     ref = contact.solve(contact.zhou2014(), contact.CylindricalPunch(100.0), load=0.01,
                         speed=0.6, friction=0.3, direction=-1)
     assert case["ends"] == list(ref.ends)
-    assert case["exponents"] == [ref.alpha, ref.beta]
+    assert case["exponents"] == {"left": ref.beta, "right": ref.alpha}
     assert case["sif"] == {}                      # both ends free: no singular end
-    X = np.linspace(-0.8, 0.8, 801)
+    X = np.round(np.linspace(-0.8, 0.8, 801), 3)      # the clean decimals -0.8, -0.798, ...
     for name in ("pressure", "sigma_xx"):
         assert case[name]["x"] == X.tolist()
         np.testing.assert_array_equal(case[name]["values"], getattr(ref, name)(X))

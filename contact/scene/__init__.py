@@ -28,6 +28,7 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     x = { start = -0.8, stop = 0.8, num = 801 }   # where curves are sampled
     # grid = { x = { start = -1, stop = 1, num = 161 }, y = { start = -1.5, stop = 0, num = 121 } }
     #                   # where the "subsurface" field is mapped (Y <= 0); optional, see below
+    # figures = false   # no PNG figures (as `contact run --no-figures`); default true
 
     [numerics]            # optional
     method = "numeric"    # or "closed_form" (the four classical punches only)
@@ -72,14 +73,44 @@ the face: an end that reaches an edge becomes a sharp corner (singular pressure)
 face takes neither ``breaks`` (the spline's knots are handled by the interpolant) nor
 ``corners`` (its edges are ``face``).
 
+**What a run writes** (:func:`write_outputs`, ``contact run --out DIR``):
+
+* ``result.json``: the scene after defaults, and per case ``inputs``, the requested fields
+  in the scene's order and ``diagnostics = {"n": Jacobi coefficients per zone, "residual":
+  the relative residual of the dominant equation, "load_check": |int p dX - P| / P}``
+  (:class:`contact.ContactResult`).  ``ends`` is ``[x_left, x_right]``, ``exponents`` is
+  labelled by end, ``{"left": beta, "right": alpha}`` (p ~ (X - x_left)^beta,
+  p ~ (x_right - X)^alpha), ``sif`` is ``{"left": K, "right": K}`` at singular ends only.
+  A curve is ``{"x": [...], "values": [...]}`` (null where it is infinite: a singular end);
+  its x are the grid's clean decimals (-0.8, -0.798, ..., 0.3, not 0.30000000000000004:
+  :func:`contact.scene.spec.clean_linspace`), the very numbers the curve was sampled at.
+* ``sweep.csv``: the tidy table, one row per case in scene order: ``case``, the inputs that
+  vary (every input for a single case), then every requested scalar -- ``x_left``,
+  ``x_right``, ``alpha``, ``beta``, ``kappa``, ``K_left``, ``K_right`` (one zone), or
+  ``zones`` and ``zone1_x_left``, ..., ``zone{j}_K_right`` (several), the subsurface extrema
+  (``max_shear``, ``max_shear_X``, ..., ``max_tension_depth_over_a``), the constants and
+  roots -- and ``n``, ``residual``, ``load_check`` (the columns: :mod:`contact.scene.table`).
+  Numbers as Python's repr, empty cells where a value is missing (a free end has no SIF):
+  ``pandas.read_csv("sweep.csv")``, or :meth:`SceneResult.to_dataframe` in Python (needs the
+  ``pandas`` extra: ``pip install 'sie-contact[pandas]'``).
+* one CSV per curve field (a column X, one column per case), and its PNG figure: one case
+  plotted alone, a sweep as a family coloured by its first swept input (viridis, with a
+  colour bar; at most 200 curves, evenly spaced, the title says so; the full data is in the
+  CSV).  ``figures = false`` or ``--no-figures``: no PNGs.
+* the run's warnings (in result.json and on stderr), e.g. a case whose contact is wider than
+  the ``[outputs] x`` grid (its curves miss part of the contact), named by case.
+
+``--out`` must be a writable directory (or creatable); ``contact run`` checks it before
+solving anything and exits with status 2 otherwise.
+
 **Several contact zones**: the contact is found from first touch, so a face with several
 valleys can touch in several zones.  A case with one zone writes ``ends``, ``exponents`` and
 ``sif`` as they are; a case with several writes, in their place, ``zones``: one entry per
 zone, left to right, ``{"ends": [xl, xr], "kinds": ["free" | "corner", ...], "exponents":
 {"left": beta, "right": alpha}, "index": kappa, "load": its share of the load}`` (and
 ``"sif"`` per zone when ``sif`` is asked).  Ask for ``"zones"`` to get that list for every
-case.  The table adds a ``zones`` column and shows the outer ends; the figures mark every
-zone.
+case.  The table adds a ``zones`` column and shows the outer ends; sweep.csv has a
+``zones`` column and columns per zone (``zone{j}_...``); the figures mark every zone.
 
 **The field under the surface** (``"subsurface"``, computed only when asked): the plane
 stresses sigma_xx, sigma_yy, sigma_xy (tension positive, stress unit S) of
@@ -122,7 +153,7 @@ file, the key and what is allowed, raised by :func:`load_scene` before anything 
 """
 from __future__ import annotations
 
-from .output import format_table, write_outputs
+from .output import check_out_dir, format_table, write_outputs
 from .parse import default_scene, load_scene, parse_scene_text
 from .run import CaseResult, SceneResult, SubsurfaceMap, run_case, run_scene
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,
@@ -131,4 +162,4 @@ from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, Ma
 __all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "SceneResult", "MaterialSpec",
            "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics", "load_scene",
            "parse_scene_text", "default_scene", "run_scene", "run_case", "write_outputs",
-           "format_table", "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]
+           "check_out_dir", "format_table", "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]

@@ -1,8 +1,10 @@
-"""Writing scene results: result.json, one CSV per curve field, figures, the console table;
-with the ``"subsurface"`` field also subsurface.npz, subsurface.csv and two contour maps."""
+"""Writing scene results: result.json, sweep.csv (:mod:`contact.scene.table`), one CSV per
+curve field, figures, the console table; with the ``"subsurface"`` field also subsurface.npz,
+subsurface.csv and two contour maps."""
 from __future__ import annotations
 
 import csv
+import itertools
 import json
 import math
 from pathlib import Path
@@ -22,33 +24,115 @@ SUBSURFACE_PANELS = 6
 # --------------------------------------------------------------------------
 # writing: result.json, CSV, PNG, the printed table
 # --------------------------------------------------------------------------
-def write_outputs(result: SceneResult, out_dir) -> list[Path]:
-    """Write result.json, one CSV per sampled curve field and its PNG figure into
+def write_outputs(result: SceneResult, out_dir, *, figures: bool | None = None,
+                  progress: bool = False) -> list[Path]:
+    """Write result.json, sweep.csv, one CSV per sampled curve field and its PNG figure into
     ``out_dir`` (created if needed).  PNGs need matplotlib; without it they are skipped.
 
     With the ``"subsurface"`` field: subsurface.npz and subsurface.csv (the maps, see
     :func:`write_subsurface_npz` and :func:`write_subsurface_csv`), and the contour maps
     subsurface_max_shear.png and subsurface_sigma_xx.png (:func:`_write_subsurface_figures`).
 
+    Parameters
+    ----------
+    figures : bool, optional
+        Write the PNG figures; None: as the scene says (``[outputs] figures``, default true).
+    progress : bool
+        Show a tqdm bar (on stderr) over the files while they are written, if that takes
+        longer than half a second.
+
     Returns
     -------
     list of Path
         The files written.
     """
+    from .table import write_sweep_csv
+    if figures is None:
+        figures = result.scene.figures
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    written = [out / "result.json"]
-    written[0].write_text(dumps_json(result.to_json()) + "\n", encoding="utf-8")
-    for name in result.curve_fields:
-        written.append(_write_csv(result, name, out / f"{name}.csv"))
     maps = "subsurface" in result.scene.fields
+    steps = [("result.json", lambda: _write_json(result, out / "result.json")),
+             ("sweep.csv", lambda: write_sweep_csv(result, out / "sweep.csv"))]
+    steps += [(f"{name}.csv", lambda name=name: _write_csv(result, name, out / f"{name}.csv"))
+              for name in result.curve_fields]
     if maps:
-        written.append(write_subsurface_npz(result, out / "subsurface.npz"))
-        written.append(write_subsurface_csv(result, out / "subsurface.csv"))
-    png = _write_figures(result, out)
-    if maps:
-        png += _write_subsurface_figures(result, out)
-    return written + png
+        steps += [("subsurface.npz",
+                   lambda: write_subsurface_npz(result, out / "subsurface.npz")),
+                  ("subsurface.csv",
+                   lambda: write_subsurface_csv(result, out / "subsurface.csv"))]
+    if figures:
+        steps += [(f"{name}.png", lambda name=name: _write_figures(result, out, [name]))
+                  for name in result.curve_fields]
+        if maps:
+            steps.append(("subsurface_*.png", lambda: _write_subsurface_figures(result, out)))
+    written = []
+    immediate = len(result.cases) > 100
+    bar = _writing_bar(len(steps), progress, immediate)
+    try:
+        for name, step in steps:
+            bar.set_postfix_str(name, refresh=immediate)
+            paths = step()
+            written += paths if isinstance(paths, list) else [paths]
+            bar.update(1)
+    finally:
+        bar.close()
+    return written
+
+
+def _write_json(result: SceneResult, path: Path) -> Path:
+    path.write_text(dumps_json(result.to_json()) + "\n", encoding="utf-8")
+    return path
+
+
+class _NoBar:
+    def set_postfix_str(self, s, refresh=True):
+        pass
+
+    def update(self, n=1):
+        pass
+
+    def close(self):
+        pass
+
+
+def _writing_bar(total: int, progress: bool, immediate: bool = False):
+    """The second phase of ``contact run``'s progress: the files being written (shown at once
+    for a long sweep, whose result.json alone takes seconds; otherwise after half a second)."""
+    if not progress:
+        return _NoBar()
+    try:
+        from tqdm import tqdm
+    except ImportError:                      # tqdm is a dependency; be lenient all the same
+        return _NoBar()
+    import sys
+    return tqdm(total=total, desc="writing outputs", unit="file", delay=0 if immediate else 0.5,
+                file=sys.stderr, dynamic_ncols=True, leave=False)
+
+
+def check_out_dir(out_dir) -> None:
+    """Raise OSError, before anything is solved, when ``out_dir`` cannot receive the outputs:
+    it exists and is not a directory, or it (or, when it does not exist yet, its nearest
+    existing parent) is not writable.  Nothing is created."""
+    out = Path(out_dir)
+    if out.exists():
+        if not out.is_dir():
+            raise OSError(f"{out} exists and is not a directory")
+        try:                                   # os.access is not enough (root, ACLs, ...)
+            import tempfile
+            with tempfile.TemporaryFile(dir=out, prefix=".contact-write-check"):
+                pass
+        except OSError as exc:
+            raise OSError(f"{out} is not writable ({exc.strerror or exc})") from None
+        return
+    parent = out.absolute().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir():
+        raise OSError(f"{out} cannot be created: {parent} is not a directory")
+    import os
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise OSError(f"{out} cannot be created: {parent} is not writable")
 
 
 # --------------------------------------------------------------------------
@@ -205,6 +289,9 @@ def _write_subsurface_figures(result: SceneResult, out: Path) -> list[Path]:
     return written
 
 
+_CONTAINERS = frozenset((dict, list, tuple))
+
+
 def dumps_json(obj, indent: str = "  ", _level: int = 0) -> str:
     """JSON text with tables indented and lists of numbers on one line (readable, compact)."""
     pad, inner = indent * _level, indent * (_level + 1)
@@ -215,7 +302,7 @@ def dumps_json(obj, indent: str = "  ", _level: int = 0) -> str:
                  for k, v in obj.items()]
         return "{\n" + ",\n".join(items) + "\n" + pad + "}"
     if isinstance(obj, (list, tuple)):
-        if all(not isinstance(v, (dict, list, tuple)) for v in obj):
+        if not _CONTAINERS.intersection(map(type, obj)):     # numbers (strings) only
             return json.dumps(list(obj), allow_nan=False)
         items = [inner + dumps_json(v, indent, _level + 1) for v in obj]
         return "[\n" + ",\n".join(items) + "\n" + pad + "]"
@@ -235,14 +322,20 @@ def _write_csv(result: SceneResult, name: str, path: Path) -> Path:
         for label, (x, v) in zip(labels, curves):
             header += [f"X ({label})", label]
             columns += [x, v]
-    rows = max(len(c) for c in columns)
     with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(header)
-        for i in range(rows):
-            w.writerow(["" if i >= len(c) or not math.isfinite(c[i]) else repr(float(c[i]))
-                        for c in columns])
+        w.writerows(itertools.zip_longest(*(_cells(c) for c in columns), fillvalue=""))
     return path
+
+
+def _cells(values: np.ndarray) -> list:
+    """CSV cells of a column: repr of each number, empty where it is not finite."""
+    v = np.asarray(values, dtype=float)
+    cells = [repr(x) for x in v.tolist()]
+    for k in np.flatnonzero(~np.isfinite(v)).tolist():
+        cells[k] = ""
+    return cells
 
 
 def _column_label(res: CaseResult, result: SceneResult, name: str) -> str:
@@ -251,10 +344,40 @@ def _column_label(res: CaseResult, result: SceneResult, name: str) -> str:
 
 _AXIS_LABELS = {"pressure": "pressure p(X)", "shear": "shear traction q(X)",
                 "sigma_xx": r"$\sigma_{XX}(X, 0)$"}
+#: Units of the quantities in the figures (UNITS: stresses S, lengths L).
+_CURVE_UNIT = "S"
+_INPUT_UNITS = {"load": "S L", "radius": "L", "half_width": "L"}
+#: A sweep's curve figures draw at most this many cases (evenly spaced through the sweep,
+#: first and last included; the title says so).
+MAX_CURVES = 200
+#: A swept input with at most this many distinct values gets a discrete colour bar.
+DISCRETE_COLOURS = 12
+_LINESTYLES = ("-", "--", ":", "-.")
 
 
-def _write_figures(result: SceneResult, out: Path) -> list[Path]:
-    names = result.curve_fields
+def _shown_cases(cases, most: int) -> list:
+    if len(cases) <= most:
+        return list(cases)
+    picks = np.unique(np.round(np.linspace(0, len(cases) - 1, most)).astype(int))
+    return [cases[k] for k in picks]
+
+
+def _input_label(key: str) -> str:
+    unit = _INPUT_UNITS.get(key)
+    return f"{key} ({unit})" if unit else key
+
+
+def _write_figures(result: SceneResult, out: Path, names=None) -> list[Path]:
+    """One PNG per curve field (``names``, default all the scene's).
+
+    One case: its curve, the contact ends dotted (the zones shaded when there are several).
+    A sweep: a family of curves (one LineCollection) coloured by the first swept input, with
+    a colour bar (viridis; discrete ticks at its values when it takes few); a second swept
+    input with at most 4 values is told apart by line style (legend), a further one is named
+    in the title; the ends of every zone of a case with several are ticks on the axis in its
+    colour.  At most :data:`MAX_CURVES` cases are drawn (evenly spaced; the title says so).
+    """
+    names = result.curve_fields if names is None else names
     if not names:
         return []
     try:
@@ -262,33 +385,108 @@ def _write_figures(result: SceneResult, out: Path) -> list[Path]:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        result.warnings.append("matplotlib is not installed: no PNG figures written "
-                               "(pip install 'sie-contact[plot]')")
+        message = ("matplotlib is not installed: no PNG figures written "
+                   "(pip install 'sie-contact[plot]')")
+        if message not in result.warnings:
+            result.warnings.append(message)
         return []
     written = []
     for name in names:
-        fig, ax = plt.subplots(figsize=(7.0, 4.2))
-        family = len(result.cases) > 1
-        for res in result.cases:
-            x, v = res.curve(name)
-            (line,) = ax.plot(x, v, lw=1.3, label=res.label if family else None)
-            if family and len(res.zones) > 1:
-                _mark_zone_ends(ax, res.zones, line.get_color())
-        if not family:
-            _draw_zones(ax, result.cases[0].zones)
-        ax.axhline(0.0, color="0.7", lw=0.6)
-        ax.set_xlabel("X")
-        ax.set_ylabel(_AXIS_LABELS[name])
-        ax.set_title(result.scene.title)
-        ax.set_ylim(*_robust_limits([res.curve(name)[1] for res in result.cases]))
-        if family:
-            ax.legend(fontsize=8)
-        fig.tight_layout()
+        fig = curve_figure(result, name)
         path = out / f"{name}.png"
         fig.savefig(path, dpi=120)
         plt.close(fig)
         written.append(path)
     return written
+
+
+def curve_figure(result: SceneResult, name: str):
+    """The matplotlib figure of one curve field (see :func:`_write_figures`); the caller
+    closes it."""
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.5, 4.5), layout="constrained")
+    if len(result.cases) > 1 and result.scene.sweep:
+        title = _draw_family(fig, ax, result, name)
+    else:
+        res = result.cases[0]
+        x, v = res.curve(name)
+        ax.plot(x, v, lw=1.3, color="C0")
+        _draw_zones(ax, res.zones)
+        ax.set_ylim(*_robust_limits([v]))
+        title = result.scene.title
+    ax.axhline(0.0, color="0.7", lw=0.6, zorder=0)
+    ax.set_xlabel("X (L)")
+    ax.set_ylabel(f"{_AXIS_LABELS[name]} ({_CURVE_UNIT})")
+    ax.set_title(title, fontsize=10)
+    return fig
+
+
+def _draw_family(fig, ax, result: SceneResult, name: str) -> str:
+    """A sweep's curves of one field on ``ax`` (see :func:`_write_figures`); returns the
+    title."""
+    import matplotlib as mpl
+    from matplotlib.collections import LineCollection
+    from matplotlib.lines import Line2D
+
+    cases = result.cases
+    shown = _shown_cases(cases, MAX_CURVES)
+    swept = [key for _, key in result.scene.sweep]
+    key = swept[0]
+    values = np.array([res.entry["inputs"][key] for res in shown], dtype=float)
+    distinct = np.unique(values)
+    cmap = mpl.colormaps["viridis"]
+    if len(distinct) <= DISCRETE_COLOURS:
+        mids = 0.5 * (distinct[1:] + distinct[:-1])
+        first = distinct[0] - (mids[0] - distinct[0] if len(distinct) > 1 else 0.5)
+        last = distinct[-1] + (distinct[-1] - mids[-1] if len(distinct) > 1 else 0.5)
+        bounds = np.concatenate([[first], mids, [last]])
+        norm = mpl.colors.BoundaryNorm(bounds, cmap.N)
+        ticks = distinct
+    else:
+        norm = mpl.colors.Normalize(distinct[0], distinct[-1])
+        ticks = None
+    curves = [res.curve(name) for res in shown]
+    segments = [np.column_stack([x, v]) for x, v in curves]
+    styles = "solid"
+    legend = []
+    second = swept[1] if len(swept) > 1 else None
+    notes = []
+    if second is not None:
+        other = [res.entry["inputs"][second] for res in shown]
+        levels = list(dict.fromkeys(other))
+        if len(levels) <= len(_LINESTYLES):
+            styles = [_LINESTYLES[levels.index(v)] for v in other]
+            legend = [Line2D([], [], color="0.3", lw=1.2, ls=_LINESTYLES[k],
+                             label=f"{second} = {_fmt(v)}") for k, v in enumerate(levels)]
+        else:
+            notes.append(f"{second} also varies")
+        notes += [f"{k} also varies" for k in swept[2:]]
+    lc = LineCollection(segments, cmap=cmap, norm=norm, linewidths=1.2, linestyles=styles)
+    lc.set_array(values)
+    ax.add_collection(lc)
+    xs = np.concatenate([x for x, _ in curves])
+    ax.set_xlim(float(np.min(xs)), float(np.max(xs)))
+    ax.set_ylim(*_robust_limits([v for _, v in curves]))
+    marks = [(x, val) for res, val in zip(shown, values) if len(res.zones) > 1
+             for z in res.zones for x in z["ends"]]
+    if marks:
+        mx, mv = np.array(marks).T
+        ax.scatter(mx, np.zeros_like(mx), c=mv, cmap=cmap, norm=norm, marker="|", s=100,
+                   linewidths=1.2, zorder=3)
+    cbar = fig.colorbar(lc, ax=ax, ticks=ticks, pad=0.02)
+    cbar.set_label(_input_label(key))
+    if ticks is not None:
+        whole = isinstance(shown[0].entry["inputs"][key], int)     # direction: -1, +1
+        cbar.ax.set_yticklabels([_fmt(int(v) if whole else float(v)) for v in ticks])
+    if legend:
+        ax.legend(handles=legend, fontsize=8)
+    title = result.scene.title
+    if notes:
+        title += f" ({'; '.join(notes)})"
+    if len(shown) < len(cases):
+        title += (f"\n{len(shown)} of {len(cases)} cases drawn (evenly spaced; {name}.csv has "
+                  "all)")
+    return title
 
 
 def _draw_zones(ax, zones):
@@ -298,12 +496,6 @@ def _draw_zones(ax, zones):
             ax.axvline(x_end, color="0.6", ls=":", lw=0.8)
         if len(zones) > 1:
             ax.axvspan(*z["ends"], color="0.85", alpha=0.5, lw=0)
-
-
-def _mark_zone_ends(ax, zones, color):
-    """A family of curves: the ends of one case's zones as ticks on the axis, in its colour."""
-    ends = [x for z in zones for x in z["ends"]]
-    ax.plot(ends, np.zeros(len(ends)), ls="none", marker="|", ms=10, mew=1.2, color=color)
 
 
 def _robust_limits(curves, pad=True) -> tuple:
@@ -324,7 +516,8 @@ def _robust_limits(curves, pad=True) -> tuple:
 
 def format_table(result: SceneResult) -> str:
     """A short text table: one row per case with its swept inputs, ends, exponents, peak
-    pressure, SIFs and sigma_XX extremes (what was requested) and the time taken.
+    pressure, SIFs and sigma_XX extremes (what was requested), the solver's check (the larger
+    of its residual and load check) and the time taken.
 
     When a case has several contact zones, a ``zones`` column gives their number, and the ends,
     exponents and SIFs shown are those of the outer ends (result.json lists every zone)."""
@@ -357,7 +550,8 @@ def format_table(result: SceneResult) -> str:
             row["x_left"], row["x_right"] = (f"{x:.10g}" for x in
                                              (zones[0]["ends"][0], zones[-1]["ends"][1]))
         if "exponents" in e:
-            row["alpha"], row["beta"] = (f"{x:.8g}" for x in e["exponents"])
+            row["alpha"] = f"{e['exponents']['right']:.8g}"
+            row["beta"] = f"{e['exponents']['left']:.8g}"
         elif zones and outer[1]:
             row["alpha"] = f"{zones[-1]['exponents']['right']:.8g}"
             row["beta"] = f"{zones[0]['exponents']['left']:.8g}"
@@ -376,6 +570,9 @@ def format_table(result: SceneResult) -> str:
         if "subsurface" in e:
             ms = e["subsurface"]["max_shear"]
             row["max shear @ depth/a"] = f"{ms['value']:.4g} @ {ms['depth_over_a']:.4g}"
+        if res.diagnostics:
+            d = res.diagnostics
+            row["check"] = f"{max(d['residual'], d['load_check']):.1e}"
         row["time ms"] = f"{1e3 * res.time_s:.1f}"
         for k in row:
             if k not in columns:
@@ -393,6 +590,9 @@ def format_table(result: SceneResult) -> str:
         lines.append(f"  (max shear with a corner on the surface: searched below Y = "
                      f"-{SUBSURFACE_CUT:g} a, the stresses being unbounded at the corner; "
                      "result.json gives the region)")
+    if "check" in columns:
+        lines.append("  (check: the larger of the solver's relative residual and load check; "
+                     "result.json and sweep.csv give n, residual and load_check)")
     if any(len(res.zones) > 1 for res in result.cases):
         lines.append("  (several zones: x_left, x_right, alpha, beta, K_left, K_right are those "
                      "of the outer ends; result.json lists every zone)")

@@ -116,7 +116,7 @@ class _Parser:
         material = self.material(self.table(data, "material", required=True))
         punch = self.punch(self.table(data, "punch", required=True))
         motion = self.motion(self.table(data, "motion", required=True), material)
-        fields, x, grid = self.outputs(self.table(data, "outputs"))
+        fields, x, grid, figures = self.outputs(self.table(data, "outputs"))
         numerics = self.numerics(self.table(data, "numerics"), punch["kind"])
         order = [name for name in data if name in ("punch", "motion")]
         sweepable = {"punch": KINDS[punch["kind"]].dimensions, "motion": MOTION_KEYS}
@@ -127,7 +127,7 @@ class _Parser:
             title = _default_title(punch)
         scene = Scene(source=self.source, title=title, material=material, punch=punch,
                       motion=motion, fields=fields, x=x, numerics=numerics, sweep=sweep,
-                      base_dir=self.base_dir, grid=grid)
+                      base_dir=self.base_dir, grid=grid, figures=figures)
         self.check_cases(scene)
         return scene
 
@@ -437,7 +437,12 @@ class _Parser:
                 raise self.error("outputs.grid", 'is the map of the "subsurface" field, which '
                                  "outputs.fields does not ask for",
                                  'add "subsurface" to outputs.fields, or remove outputs.grid')
-        return tuple(seen), x, grid
+        figures = table.get("figures", True)
+        if not isinstance(figures, bool):
+            raise self.error("outputs.figures", f"must be true or false, got "
+                             f"{_describe(figures)}",
+                             "true (write the PNG figures, the default) or false")
+        return tuple(seen), x, grid, figures
 
     def x_grid(self, value, key="outputs.x", max_num=1_000_000, name="X") -> XGrid:
         allowed = (f"{{ start = {name}0, stop = {name}1, num = N }} with {name}0 < {name}1 and "

@@ -6,7 +6,7 @@ import math
 import sys
 import time
 import warnings
-from concurrent.futures import Executor, as_completed
+from concurrent.futures import Executor
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
@@ -15,6 +15,7 @@ import numpy as np
 import contact
 import sie
 
+from .batch import build_once, map_chunked
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, MaterialSpec,
                    SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
@@ -45,6 +46,9 @@ class CaseResult:
         The stress map under the surface, when the scene asks for ``"subsurface"`` (its
         extrema are in ``entry["subsurface"]``; the maps go to subsurface.npz/.csv, not to
         result.json).
+    diagnostics : dict
+        The solver's diagnostics (:func:`diagnostics`): ``n``, ``residual``, ``load_check``;
+        written to result.json after the fields, and to sweep.csv.
     """
     index: int
     label: str
@@ -53,6 +57,7 @@ class CaseResult:
     warnings: list = field(default_factory=list)
     zones: list = field(default_factory=list)
     subsurface: "SubsurfaceMap | None" = None
+    diagnostics: dict = field(default_factory=dict)
 
     def curve(self, name):
         """(x, values) of a sampled curve field."""
@@ -104,11 +109,36 @@ class SceneResult:
         """The content of result.json."""
         return {"scene": self.scene.echo(),
                 "scene_file": self.scene.source,
-                "cases": [_json_entry(c.entry) for c in self.cases],
+                "cases": [_json_case(c) for c in self.cases],
                 "version": _version(),
                 "timing_s": self.timing_s,
                 "units": UNITS,
                 "warnings": list(self.warnings)}
+
+    def table(self) -> tuple:
+        """The tidy sweep table of sweep.csv: (column names, rows), one row per case in scene
+        order, None where a cell is empty (:func:`contact.scene.table.sweep_table`)."""
+        from .table import sweep_table
+        return sweep_table(self)
+
+    def to_dataframe(self):
+        """The sweep table (sweep.csv) as a pandas DataFrame, one row per case.
+
+        Raises
+        ------
+        ImportError
+            Without pandas (an optional extra: ``pip install 'sie-contact[pandas]'``).
+        """
+        from .table import to_dataframe
+        return to_dataframe(self)
+
+
+def _json_case(res) -> dict:
+    """A case's entry in result.json: its fields, then its diagnostics."""
+    out = _json_entry(res.entry)
+    if res.diagnostics:
+        out["diagnostics"] = dict(res.diagnostics)
+    return out
 
 
 def _version() -> str:
@@ -142,8 +172,8 @@ def run_case(case: Case) -> CaseResult:
     t0 = time.perf_counter()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        material = case.material.build()
-        result = contact.solve(material, case.punch.build(),
+        material = build_once(case.material)
+        result = contact.solve(material, build_once(case.punch),
                                load=case.inputs["load"], speed=case.speed,
                                friction=case.inputs["friction"],
                                direction=case.inputs["direction"], method=case.numerics.method,
@@ -161,7 +191,7 @@ def run_case(case: Case) -> CaseResult:
             elif name == "ends":
                 entry["ends"] = [result.ends[0], result.ends[1]]
             elif name == "exponents":
-                entry["exponents"] = [result.alpha, result.beta]
+                entry["exponents"] = {"left": result.beta, "right": result.alpha}
             elif name == "sif":
                 entry["sif"] = dict(result.sif)
             elif name in CURVE_FIELDS:
@@ -171,9 +201,32 @@ def run_case(case: Case) -> CaseResult:
             elif name == "subsurface":
                 entry[name], stress_map = subsurface(result, case.grid)
         zones = [zone_entry(z, False) for z in result.zones]
+        checks = diagnostics(result)
     return CaseResult(case.index, case.label, entry, time.perf_counter() - t0,
-                      [f"{w.category.__name__}: {w.message}" for w in caught], zones,
-                      stress_map)
+                      [f"{w.category.__name__}: {w.message}" for w in caught]
+                      + grid_warnings(result, case.x if X is not None else None), zones,
+                      stress_map, checks)
+
+
+def diagnostics(result) -> dict:
+    """The solver's diagnostics of one case: ``n`` (Jacobi coefficients per zone),
+    ``residual`` (:attr:`contact.ContactResult.residual`, relative) and ``load_check``
+    (|int p dX - P| / P)."""
+    return {"n": int(result.n), "residual": float(result.residual),
+            "load_check": float(result.load_check)}
+
+
+def grid_warnings(result, x: XGrid | None) -> list:
+    """A warning when the contact (the outer ends of its zones) reaches beyond the scene's
+    x grid, where the curves are sampled (they would miss part of the contact)."""
+    if x is None:
+        return []
+    xl, xr = result.zones[0].ends[0], result.zones[-1].ends[1]
+    if x.start <= xl and xr <= x.stop:
+        return []
+    return [f"the contact [{xl:.6g}, {xr:.6g}] is wider than the x grid [{x.start:g}, "
+            f"{x.stop:g}] of outputs.x: the curves miss part of it (widen outputs.x, or leave "
+            "it out to follow the contact)"]
 
 
 def subsurface_axes(result, grid: SubsurfaceGrid | None = None) -> tuple:
@@ -338,33 +391,22 @@ def _with_speed_fields(entry: dict, per_speed: dict, fields) -> dict:
 
 
 def _map_in_order(fn, cases, executor, progress, scene):
-    """[fn(case) for case in cases], in this process or through ``executor``; the library's
-    input errors become a CaseError naming the case."""
+    """[fn(case) for case in cases], in this process or through ``executor`` in chunks
+    (:func:`contact.scene.batch.map_chunked`); the first of the library's input errors in
+    scene order becomes a CaseError naming the case."""
     bar = _progress_bar(len(cases), progress)
     try:
-        if executor is None:
-            out = []
-            for case in cases:
-                with _naming(case, scene):
-                    out.append(fn(case))
-                bar.update(1)
-            return out
-        futures = [executor.submit(fn, case) for case in cases]
-        try:
-            for fut in as_completed(futures):
-                if fut.exception() is not None:
-                    break                        # report it below, in scene order
-                bar.update(1)
-            out = []
-            for fut, case in zip(futures, cases):
-                with _naming(case, scene):
-                    out.append(fut.result())
-            return out
-        finally:
-            for fut in futures:
-                fut.cancel()
+        done = map_chunked(fn, cases, executor, bar.update)
     finally:
         bar.close()
+    out = []
+    for case in cases:
+        res = done[case.index]
+        if isinstance(res, Exception):
+            with _naming(case, scene):
+                raise res
+        out.append(res)
+    return out
 
 
 @contextmanager

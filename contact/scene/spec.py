@@ -1,6 +1,7 @@
 """Scene vocabulary, errors and the parsed-scene data classes."""
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from dataclasses import dataclass
@@ -19,7 +20,7 @@ MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho")
 PRESETS = {"zhou2014": contact.zhou2014}
 PIECE_KEYS = ("from", "to", "coefficients")
 MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
-OUTPUT_KEYS = ("fields", "x", "grid")
+OUTPUT_KEYS = ("fields", "x", "grid", "figures")
 X_KEYS = ("start", "stop", "num")
 GRID_KEYS = ("x", "y")
 NUMERICS_KEYS = ("method", "n", "tol")
@@ -67,6 +68,8 @@ UNITS = {
     "N21, N22, rayleigh_speed, roots": "dimensionless",
     "velocity": "the unit of sqrt(C33/rho)",
     "timing_s": "seconds",
+    "diagnostics: n": "count (Jacobi coefficients per zone)",
+    "diagnostics: residual, load_check": "dimensionless (relative)",
 }
 
 DEFAULT_SCENE_TOML = '''\
@@ -180,13 +183,15 @@ class PunchSpec:
 
 @dataclass(frozen=True)
 class XGrid:
-    """Where curves are sampled: numpy.linspace(start, stop, num)."""
+    """Where curves are sampled: numpy.linspace(start, stop, num), without its float noise
+    (:func:`clean_linspace`)."""
     start: float
     stop: float
     num: int
 
     def points(self) -> np.ndarray:
-        return np.linspace(self.start, self.stop, self.num)
+        """The grid's points (a read-only array, shared by the cases of a scene)."""
+        return _grid_points(self.start, self.stop, self.num)
 
     def echo(self) -> dict:
         return {"start": self.start, "stop": self.stop, "num": self.num}
@@ -253,6 +258,7 @@ class Scene:
     sweep: tuple
     base_dir: str | None = None
     grid: SubsurfaceGrid | None = None
+    figures: bool = True
 
     def cases(self) -> list[Case]:
         """The Cartesian product of the swept values, the first swept key varying slowest."""
@@ -295,10 +301,46 @@ class Scene:
         outputs = {"fields": list(self.fields), "x": x}
         if self.grid is not None:
             outputs["grid"] = self.grid.echo()
+        outputs["figures"] = self.figures
         return {"title": self.title, "material": material, "punch": punch, "motion": motion,
                 "outputs": outputs,
                 "numerics": {"method": self.numerics.method, "n": self.numerics.n,
                              "tol": self.numerics.tol}}
+
+
+def clean_linspace(start: float, stop: float, num: int) -> np.ndarray:
+    """numpy.linspace(start, stop, num) without float noise on decimal grids.
+
+    When start, stop (as Python writes them) and the step are decimals of at most 15 places,
+    as in a scene's ``x = { start = -0.8, stop = 0.8, num = 801 }``, the k-th point is the
+    float nearest to the decimal start + k step (computed as (S + k D) / 10^d with exact
+    integers S, D), so it prints as that decimal (0.3, not 0.30000000000000004).  Otherwise
+    (a step like 1/3, or ends that are not short decimals) it is numpy.linspace.  Either way
+    the first and last points are ``start`` and ``stop`` exactly.
+    """
+    from decimal import Decimal
+    a, b = Decimal(repr(float(start))), Decimal(repr(float(stop)))
+    steps = num - 1
+    if steps >= 1:
+        for d in range(16):
+            A, B = a.scaleb(d), b.scaleb(d)
+            if A != A.to_integral_value() or B != B.to_integral_value():
+                continue
+            A, B = int(A), int(B)
+            if max(abs(A), abs(B)) >= 2 ** 53:
+                break
+            if (B - A) % steps:
+                continue
+            k = np.arange(num, dtype=np.int64)
+            return (A + (B - A) // steps * k) / 10.0 ** d
+    return np.linspace(start, stop, num)
+
+
+@functools.lru_cache(maxsize=64)
+def _grid_points(start, stop, num) -> np.ndarray:
+    x = clean_linspace(start, stop, num)
+    x.setflags(write=False)
+    return x
 
 
 def _json_float(v):

@@ -1,0 +1,124 @@
+"""``make bench`` (sweep part): how a scene's sweep scales, measured in one run.
+
+Writes validation/out/bench_sweep.md.  The sweep: the paper's material, a cylindrical punch
+(R = 100, P = 0.01), 100 speeds x 100 frictions asking ends, exponents and SIFs (the
+issue's 1e4-case sweep).  Wall times (the pools and the cluster are wall-time objects); each
+row gives its ratio to the serial run of the same build, which varies less between machines
+than the time itself.
+
+Targets (issue "sweeps that scale"):
+
+* the process pool on N workers at >= 0.8 N of the serial speed (>= 1.7x on 2 cores);
+* a Dask LocalCluster of N worker processes within 15 % of the process pool at equal N;
+* a 1e5-case sweep in bounded memory (the peak resident size of ``contact run`` is stated)
+  writing its table;
+* in process: the 1e4-case sweep in < 1 s (not met: see the row).
+"""
+from __future__ import annotations
+
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+OUT = Path(__file__).resolve().parent / "out"
+
+
+def sweep_toml(n_speed, n_friction, fields=("ends", "exponents", "sif")):
+    speeds = ", ".join(repr(float(v)) for v in np.round(np.linspace(0.0, 0.9, n_speed), 6))
+    frictions = ", ".join(repr(float(v)) for v in np.round(np.linspace(0.0, 0.5, n_friction), 6))
+    return (f'title = "sweep {n_speed} x {n_friction}"\n[material]\npreset = "zhou2014"\n'
+            f'[punch]\nkind = "cylindrical"\nradius = 100.0\n[motion]\nload = 0.01\n'
+            f"speed = [{speeds}]\nfriction = [{frictions}]\n[outputs]\n"
+            f"fields = {list(fields)!r}\n".replace("'", '"'))
+
+
+def _timed(fn):
+    t0 = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - t0, out
+
+
+def scaling_rows(scene):
+    from contact.scene import run_scene
+    rows = []
+    run_scene(scene)                                            # warm this process
+    t1, serial = _timed(lambda: run_scene(scene))
+    rows.append(("serial, in process", t1, "1.00", "< 1 s (in process)"))
+    cores = os.cpu_count() or 1
+    pooled = {}
+    for n in sorted({1, 2, cores}):
+        with ProcessPoolExecutor(n) as ex:
+            run_scene(scene, executor=ex)                       # start and warm the workers
+            t, res = _timed(lambda: run_scene(scene, executor=ex))
+        pooled[n] = t
+        same = all(repr(a.entry) == repr(b.entry) for a, b in zip(serial.cases, res.cases))
+        rows.append((f"process pool, {n} worker(s){'' if same else ' (RESULTS DIFFER)'}", t,
+                     f"{t1 / t:.2f}x serial", f">= {0.8 * n:.1f}x"
+                     + (" PASS" if t1 / t >= 0.8 * n else " FAIL")))
+    try:
+        from distributed import Client, LocalCluster
+    except ImportError:
+        rows.append(("Dask LocalCluster", float("nan"), "distributed not installed", ""))
+        return rows
+    for n in sorted({2, cores}):
+        with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                          dashboard_address=None, worker_dashboard_address=None) as cl, \
+                Client(cl) as client:
+            ex = client.get_executor(pure=False)
+            run_scene(scene, executor=ex)
+            t, res = _timed(lambda: run_scene(scene, executor=ex))
+        same = all(repr(a.entry) == repr(b.entry) for a, b in zip(serial.cases, res.cases))
+        ref = pooled.get(n)
+        ratio = f"{t / ref:.2f}x the pool" if ref else ""
+        rows.append((f"Dask LocalCluster, {n} worker processes{'' if same else ' (RESULTS DIFFER)'}",
+                     t, ratio, "<= 1.15x the pool" + (
+                         (" PASS" if t / ref <= 1.15 else " FAIL") if ref else "")))
+    return rows
+
+
+def memory_row(n_speed=1000, n_friction=100, jobs=0):
+    """Peak resident size of ``contact run`` on a 1e5-case sweep (a child process)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "big.toml"
+        path.write_text(sweep_toml(n_speed, n_friction, ("ends", "exponents")))
+        t0 = time.perf_counter()
+        proc = subprocess.run([sys.executable, "-m", "contact", "run", str(path), "--out",
+                               str(Path(tmp) / "out"), "--quiet", "--jobs", str(jobs)],
+                              capture_output=True, text=True)
+        t = time.perf_counter() - t0
+        peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
+        files = sorted(p.name for p in (Path(tmp) / "out").glob("*"))
+        ok = proc.returncode == 0
+    return (f"{n_speed * n_friction} cases, `contact run --jobs {jobs}`"
+            f"{'' if ok else ' (FAILED: ' + proc.stderr[-200:] + ')'}", t,
+            f"peak RSS {peak_mb:.0f} MB (largest process); wrote {', '.join(files)}", "bounded")
+
+
+def main(argv=None):
+    from contact.scene import parse_scene_text
+    OUT.mkdir(parents=True, exist_ok=True)
+    quick = argv is not None and "--quick" in argv
+    scene = parse_scene_text(sweep_toml(20 if quick else 100, 20 if quick else 100),
+                             source="<bench sweep>")
+    rows = scaling_rows(scene)
+    if not quick:
+        rows.append(memory_row())
+    lines = ["# sweep benchmarks", "",
+             f"{len(scene.cases())}-case sweep (cylindrical punch, speed x friction; ends, "
+             f"exponents, SIFs) on {os.cpu_count()} cores; wall times.", "",
+             "| run | wall [s] | ratio | target |", "|---|---|---|---|"]
+    lines += [f"| {r} | {t:.2f} | {ratio} | {target} |" for r, t, ratio, target in rows]
+    text = "\n".join(lines) + "\n"
+    (OUT / "bench_sweep.md").write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
