@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from ._jit import jit
+
 __all__ = ["log_gamma_ratio", "gamma_ratio", "jacobi_moment", "jacobi_norm",
            "gauss_jacobi_constant", "jacobi_moment_shifted", "jacobi_end_values"]
 
@@ -27,10 +29,16 @@ def log_gamma_ratio(z: float, a: float) -> float:
 
     Uses upward recurrence to z >= 20 then the difference of Stirling series
     (DLMF 5.11.1), written so that the leading term is ``(z-1/2) log1p(a/z) +
-    a ln(z+a) - a``.
+    a ln(z+a) - a``.  Compiled (:func:`_log_gamma_ratio`): the Gauss-Jacobi constants
+    and the Jacobi norms call it a dozen times for every new pair of exponents.
     """
     if not (z > 0.0 and z + a > 0.0):
         raise ValueError(f"log_gamma_ratio needs z > 0 and z + a > 0, got z={z!r}, a={a!r}")
+    return _log_gamma_ratio(float(z), float(a))
+
+
+@jit()
+def _log_gamma_ratio(z, a):
     if a == 0.0:
         return 0.0
     shift = 0.0
