@@ -76,12 +76,17 @@ class Punch:
     slope_degree: Optional[int] = None       # the slope is a polynomial of this degree
     convex: bool = False                     # slope nondecreasing: the gap opens by itself
     kind: str = "profile"
+    #: slope and height are the library's own elementwise formulas of a float array (the
+    #: paper's four punches): they need no check of shape and finiteness on every call
+    _own_formulas: bool = False
 
     def _slope(self, X):                      # pragma: no cover - abstract
         raise NotImplementedError
 
     def slope(self, X):
         """dv/dX of the punch face at X (vectorised), checked for shape and finiteness."""
+        if self._own_formulas:
+            return self._slope(np.asarray(X, dtype=float))
         return _checked(self._slope, X, "slope")
 
     def _height(self, X):
@@ -100,6 +105,8 @@ class Punch:
             raise ProfileCallableError(
                 f"the height of this {type(self).__name__} is not known: give height= "
                 "(the slope is integrated where a height difference is needed)")
+        if self._own_formulas:
+            return self._height(np.asarray(X, dtype=float))
         return _checked(self._height, X, "height")
 
     @property
@@ -133,6 +140,7 @@ class FlatPunch(Punch):
     convex = True
     slope_degree = 0
 
+    _own_formulas = True
     def __init__(self, half_width):
         self.half_width = _positive("half_width", half_width)
         self.corners = (-self.half_width, self.half_width)
@@ -161,6 +169,7 @@ class TriangularPunch(Punch):
     corners = (0.0, None)
     homogeneous = (0.0, 0)
 
+    _own_formulas = True
     def __init__(self, slope):
         self.m0 = _positive("slope", slope)
 
@@ -185,6 +194,7 @@ class _ParabolicFace(Punch):
     slope_degree = 1
     homogeneous = (0.0, 1)
 
+    _own_formulas = True
     def __init__(self, radius):
         self.radius = _positive("radius", radius)
 
