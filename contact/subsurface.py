@@ -218,7 +218,7 @@ class HalfSpaceModes:
         delta = np.sqrt(complex(d2))
         a, b = em + delta, em - delta
         S = _stress_polynomials(material, const.c)
-        g = {"p": (1j * S["xy"], True), "q": (S["yy"], False)}
+        g = {"p": 1j * S["xy"], "q": S["yy"]}          # the traction rows: i S_xy p^, S_yy q^
         dyy, dxy = _divided(S["yy"], em, d2), _divided(S["xy"], em, d2)
         delta_p = _poly(S["xy"], b) * dyy - _poly(S["yy"], b) * dxy
         size = abs(_poly(S["xy"], b) * dyy) + abs(_poly(S["yy"], b) * dxy)
@@ -233,7 +233,7 @@ class HalfSpaceModes:
             f = S[comp]
             fa, fb, fab = _poly(f, a), _poly(f, b), _divided(f, em, d2)
             for j, key in enumerate(("p", "q")):
-                gc = g[key][0]
+                gc = g[key]
                 ga, gb, gab = _poly(gc, a), _poly(gc, b), _divided(gc, em, d2)
                 A_s = 0.5 * (fa * gb + fb * ga)
                 A_a = 0.5 * (gb * fab - fb * gab)
