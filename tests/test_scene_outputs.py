@@ -1,4 +1,4 @@
-"""What ``contact run`` writes for a researcher (issue 14, items 4-6): the tidy sweep table
+"""What ``contact run`` writes for a researcher: the tidy sweep table
 (sweep.csv, SceneResult.to_dataframe), the solver's diagnostics, exponents labelled by end,
 clean sampled x, the warning for a grid narrower than the contact, an --out that cannot be
 written failing before anything is solved, and the figures (a coloured family, fast, or none).
