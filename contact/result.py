@@ -157,6 +157,13 @@ class ContactResult:
 
     # geometry ------------------------------------------------------------
     @property
+    def zone_scale(self) -> float:
+        """The largest half-width of the zones: the length over which the field under the
+        surface varies (the default maps and extrema regions are multiples of it; two narrow
+        zones far apart have their stresses within about their own width of the surface)."""
+        return max(z.width for z in self.zones) / 2.0
+
+    @property
     def half_width(self):
         e = self.ends
         return 0.5 * (e[1] - e[0])
@@ -288,8 +295,9 @@ class ContactResult:
         Parameters
         ----------
         region : ((X_min, X_max), (Y_min, Y_max)), optional
-            Default: X within one half-span a of the contact's outer ends, 0 >= Y >= -3 a
-            (a = half of x_right of the last zone minus x_left of the first).
+            Default: X within a of the contact's outer ends (x_left of the first zone,
+            x_right of the last), 0 >= Y >= -3 a, with a = :attr:`zone_scale` (the largest
+            zone's half-width; the half-width for one zone).
         grid : (int, int)
             Grid points in X and Y (>= 3 each).
 
@@ -309,7 +317,7 @@ class ContactResult:
         """
         from .subsurface import UnboundedStressError, field_extrema
         xl, xr = self.zones[0].ends[0], self.zones[-1].ends[1]
-        a = 0.5 * (xr - xl)
+        a = self.zone_scale
         if region is None:
             region = ((xl - a, xr + a), (-3.0 * a, 0.0))
         try:

@@ -299,3 +299,22 @@ def test_result_without_material_says_so():
     bare = replace(r, material=None)
     with pytest.raises(contact.ContactInputError, match="no material"):
         bare.stress(0.0, -a)
+
+
+def test_default_region_scales_with_the_zones_not_the_gap_between_them():
+    """Two narrow zones far apart: the field varies within about a zone's width of the
+    surface, so the default region is 3 x the largest zone half-width deep (one zone: its
+    half-width) and reaches that far beyond the outer ends."""
+    w = contact.ProfilePunch(lambda X: 0.2 * X ** 3 - 0.2 * X, face=(-2.0, 2.0))
+    r = contact.solve(contact.zhou2014(), w, load=0.02, speed=0.3)
+    assert len(r.zones) == 2
+    a = max(z.width for z in r.zones) / 2
+    assert r.zone_scale == a and a < 0.1 * (r.zones[1].ends[1] - r.zones[0].ends[0])
+    e = r.stress_extrema()
+    (x0, x1), (y0, y1) = e.region
+    assert (x0, x1, y0, y1) == (r.zones[0].ends[0] - a, r.zones[1].ends[1] + a, -3 * a, 0.0)
+    # against a finer search of the same region: the default grid resolves the zones
+    fine = r.stress_extrema(region=e.region, grid=(401, 121))
+    assert e.max_shear.value == pytest.approx(fine.max_shear.value, rel=1e-9)
+    hertz, _, _ = _hertz()
+    assert hertz.zone_scale == hertz.half_width

@@ -119,8 +119,8 @@ frame), with the in-plane maximum shear and the largest tension sigma_1 derived 
 The grid is ``[outputs] grid = { x = {start, stop, num}, y = {start, stop, num} }``
 (2 <= num <= 10000, start < stop, y.stop <= 0, nx * ny <= 4e6); either axis may be left out.
 By default, per case, scaled to its contact (x_left, x_right the outer ends of its zones,
-a = (x_right - x_left) / 2): X from x_left - a to x_right + a (161 points) and Y from -3 a up
-to the surface Y = 0 (121 points).  A grid point on Y = 0 that is exactly a singular (corner)
+a the largest zone's half-width): X from x_left - a to x_right + a (161 points) and Y from
+-3 a up to the surface Y = 0 (121 points).  A grid point on Y = 0 that is exactly a singular (corner)
 contact end, where the stresses are infinite, is NaN (as the curve fields are there); every
 other point is finite.  result.json gets, per case, ``subsurface = {"max_shear": {value, X, Y,
 depth, half_width, depth_over_a}, "max_tension": {...}, "region": {"x": [X0, X1], "y": [Y0,

@@ -231,11 +231,11 @@ def grid_warnings(result, x: XGrid | None) -> list:
 
 def subsurface_axes(result, grid: SubsurfaceGrid | None = None) -> tuple:
     """The (x, y) axes of a case's map: the scene's ``[outputs] grid``, an axis it leaves out
-    scaled to the contact: with x_left, x_right the outer ends of the zones and
-    a = (x_right - x_left) / 2, X from x_left - a to x_right + a (161 points) and Y from -3 a
-    to 0 (121 points)."""
+    scaled to the contact: with x_left, x_right the outer ends of the zones and a the largest
+    zone's half-width (:attr:`contact.ContactResult.zone_scale`), X from x_left - a to
+    x_right + a (161 points) and Y from -3 a to 0 (121 points)."""
     xl, xr = result.zones[0].ends[0], result.zones[-1].ends[1]
-    a = 0.5 * (xr - xl)
+    a = result.zone_scale
     gx = grid.x if grid is not None and grid.x is not None else XGrid(
         xl - SUBSURFACE_MARGIN * a, xr + SUBSURFACE_MARGIN * a, SUBSURFACE_POINTS[0])
     gy = grid.y if grid is not None and grid.y is not None else XGrid(
@@ -258,8 +258,8 @@ def subsurface(result, grid: SubsurfaceGrid | None = None) -> tuple:
     (:meth:`contact.ContactResult.stress_extrema`) in the map's region, each with its value,
     X, Y, depth = -Y, the half-width a of the nearest zone and depth / a; ``region`` is where
     they were searched -- the map's extent, except that when the map's top row is the surface
-    and a singular end lies in its X range, the top is lowered to Y = -1e-3 a (a the contact's
-    half-span; half the map's depth if that is shallower): the stresses grow without bound
+    and a singular end lies in its X range, the top is lowered to Y = -1e-3 a (a the largest
+    zone's half-width; half the map's depth if that is shallower): the stresses grow without bound
     toward the corner, so such an extremum sits on that cut, next to the corner (its SIFs
     characterise the corner itself).  ``grid`` echoes the map's axes.
     """
@@ -277,8 +277,7 @@ def subsurface(result, grid: SubsurfaceGrid | None = None) -> tuple:
 
     x0, x1, y0, y1 = gx.start, gx.stop, gy.start, gy.stop
     if y1 == 0.0 and any(x0 <= e <= x1 for e in singular):
-        a = 0.5 * (result.zones[-1].ends[1] - result.zones[0].ends[0])
-        y1 = -min(SUBSURFACE_CUT * a, 0.5 * (y1 - y0))
+        y1 = -min(SUBSURFACE_CUT * result.zone_scale, 0.5 * (y1 - y0))
     ext = result.stress_extrema(((x0, x1), (y0, y1)))
     entry = {}
     for name in ("max_shear", "max_tension"):

@@ -39,9 +39,9 @@ SPEED_FIELDS = ("roots", "constants")
 DEFAULT_FIELDS = ("ends", "exponents", "pressure")
 AUTO_X_POINTS = 401
 AUTO_X_MARGIN = 0.5            # automatic x: the contact widened by this fraction of its length
-#: The field under the surface (``"subsurface"``): the default map, in units of the contact's
-#: half-span a = (x_right - x_left) / 2 (outer ends of its zones): X from x_left - a to
-#: x_right + a, Y from -3 a to 0, with this many points (nx, ny).
+#: The field under the surface (``"subsurface"``): the default map, in units of the largest
+#: zone's half-width a (ContactResult.zone_scale), x_left, x_right the outer ends of the
+#: zones: X from x_left - a to x_right + a, Y from -3 a to 0, with this many points (nx, ny).
 SUBSURFACE_POINTS = (161, 121)
 SUBSURFACE_MARGIN = 1.0        # X: the contact widened by this many a on each side
 SUBSURFACE_DEPTH = 3.0         # Y: from -SUBSURFACE_DEPTH a up to the surface
