@@ -270,7 +270,7 @@ def _closed_form_result(const, punch, load, speed, friction, direction, mu_f, ma
                        int(c.kappa), float(load), dict(c.sif))
     return _ClosedFormContactResult(
         zones=(zone,), n=2,
-        load_check=c.load_check, constants=const, load=load,
+        load_check=abs(c.load_check - load) / load, constants=const, load=load,
         speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
         method="closed_form", solution=c, material=material)
 

@@ -727,3 +727,15 @@ def test_cylindrical_compressive_peak_location_report():
                        for c in SPEEDS))
     for c in SPEEDS:
         assert all(loc[c, m2] < loc[c, m1] for m1, m2 in zip(MUS[1:], MUS[2:]))
+
+
+@pytest.mark.parametrize("punch", [contact.FlatPunch(0.1), contact.TriangularPunch(0.01),
+                                   contact.ParabolicPunch(100.0), contact.CylindricalPunch(100.0)],
+                         ids=["flat", "triangular", "parabolic", "cylindrical"])
+def test_closed_form_load_check_is_the_relative_load_error(punch):
+    """ContactResult.load_check is |int p - P| / P for both methods (the closed form's
+    integral, Zhou et al. 2014 eq. (5.5), reproduces P to rounding)."""
+    r = contact.solve(contact.zhou2014(), punch, load=0.01, speed=0.6, friction=0.3,
+                      method="closed_form")
+    assert r.load_check <= 1e-13
+    assert r.load_check == abs(r.solution.load_check - 0.01) / 0.01
