@@ -338,7 +338,10 @@ def _predict(state, P, face=None, eq=None):
                     # the width from the zone's own load (without the other zones), its
                     # share of P as at first touch, through the same power law
                     share = P * state._shares[j] if state._shares else None
+                    lo, hi = face.extent
                     for _ in range(3 if share else 0):
+                        if c < lo or d > hi:
+                            break       # wider than the face: the caller clips it (an edge)
                         own = eq.zone_loads([Zone(c, d)])[0]
                         if not own > 0.0:
                             break

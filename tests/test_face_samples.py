@@ -270,3 +270,18 @@ def test_samples_are_copied_and_frozen():
     with pytest.raises(AttributeError):
         face.extent = (0.0, 2.0)
     assert isinstance(face, SampledFace)
+
+
+def test_sampled_face_solved_directly_where_the_contact_reaches_both_edges():
+    """A load whose contact covers the whole sampled face, asked for on its own (not along a
+    load curve): the first-touch prediction is wider than the face and must not evaluate the
+    slope outside the samples; both ends become corners at the edges, as along the curve."""
+    X = np.linspace(-0.5, 0.5, 200)
+    punch = contact.ProfilePunch.from_samples(X, X ** 2 / 200.0)
+    m = contact.zhou2014()
+    direct = contact.solve(m, punch, load=0.03, speed=0.6, friction=0.3)
+    along = contact.load_curve(m, punch, [0.01, 0.02, 0.03], speed=0.6, friction=0.3)[-1]
+    assert direct.zones[0].ends == along.zones[0].ends == (-0.5, 0.5)
+    assert direct.zones[0].kinds == ("corner", "corner")
+    Xs = np.linspace(-0.49, 0.49, 9)
+    assert np.allclose(direct.pressure(Xs), along.pressure(Xs), rtol=1e-10, atol=0)

@@ -47,6 +47,17 @@ OTHER_SCENES = {"default": (1, ()), "profile_samples": (3, (("motion", "load"),)
 
 
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
+def test_shipped_scenes_run(path):
+    """Every shipped scene solves every case (each case from first touch on its own, as a
+    sweep runs them), and every result passes its own load check."""
+    res = run_scene(load_scene(path))
+    assert all(c.diagnostics["load_check"] <= 1e-12 for c in res.cases)
+    if path.stem == "profile_samples":     # the last load reaches both edges of the face
+        last = res.cases[-1].entry
+        assert last["ends"] == [-0.5, 0.5] and last["sif"].keys() == {"left", "right"}
+
+
+@pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
 def test_shipped_scenes_parse(path):
     s = load_scene(path)
     cases = s.cases()
