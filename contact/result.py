@@ -5,6 +5,7 @@ project's errata notes (p > 0 compressive, q = mu_f p, Hc[f](X) = (1/pi) PV int 
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -179,13 +180,19 @@ class ContactResult:
             raise ContactInputError("X must be finite real numbers")
         return X
 
+    @property
+    def singular_ends(self) -> tuple:
+        """(X, exponent) of every contact end where p is unbounded (exponent < 0: a corner),
+        left to right: the stresses are infinite there on the surface."""
+        return tuple((end, e) for z in self.zones
+                     for end, e in ((z.ends[0], z.beta), (z.ends[1], z.alpha)) if e < 0)
+
     def _check_not_singular_end(self, X, what):
-        for z in self.zones:
-            for end, expo in ((z.ends[1], z.alpha), (z.ends[0], z.beta)):
-                if expo < 0 and np.any(X == end):
-                    raise ContactInputError(
-                        f"{what} is infinite at the singular contact end X = {end!r} "
-                        f"(exponent {expo:.6g}); evaluate at points off it")
+        for end, expo in self.singular_ends:
+            if np.any(X == end):
+                raise ContactInputError(
+                    f"{what} is infinite at the singular contact end X = {end!r} "
+                    f"(exponent {expo:.6g}); evaluate at points off it")
 
     # fields --------------------------------------------------------------
     def pressure(self, X):
@@ -261,7 +268,7 @@ class ContactResult:
         out = [np.zeros(X.shape) for _ in range(3)]
         below = Y < 0
         if np.any(below):
-            modes = self._modes()
+            modes = self._modes
             Cp = [np.asarray(self.solution.cauchy(z), dtype=complex)
                   for z in modes.points(X[below], Y[below])]
             for o, v in zip(out, modes.stresses(Cp, q_ratio=self.mu_f or None)):
@@ -274,17 +281,14 @@ class ContactResult:
             out[2][on] = -self.mu_f * p
         return StressField(X, Y, *out)
 
+    @functools.cached_property
     def _modes(self):
-        """The half-space modes at this speed (cached)."""
-        modes = self.__dict__.get("_modes_cache")
-        if modes is None:
-            if self.material is None:
-                raise ContactInputError("this ContactResult carries no material: the field "
-                                        "under the surface needs it (contact.solve sets it)")
-            from .subsurface import HalfSpaceModes
-            modes = HalfSpaceModes.of(self.material, self.constants.c)
-            self.__dict__["_modes_cache"] = modes
-        return modes
+        """The half-space modes at this speed (computed on first use)."""
+        if self.material is None:
+            raise ContactInputError("this ContactResult carries no material: the field "
+                                    "under the surface needs it (contact.solve sets it)")
+        from .subsurface import HalfSpaceModes
+        return HalfSpaceModes.of(self.material, self.constants.c)
 
     def stress_extrema(self, region=None, grid=(81, 61)):
         """Where the in-plane maximum shear and the largest tension (sigma_1) peak.
@@ -336,13 +340,12 @@ class ContactResult:
         if nx < 3 or ny < 3:
             raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
         if y1 == 0.0:
-            for z in self.zones:
-                for end, e in ((z.ends[0], z.beta), (z.ends[1], z.alpha)):
-                    if e < 0 and x0 <= end <= x1:
-                        raise UnboundedStressError(
-                            f"the stresses are infinite at the singular contact end "
-                            f"X = {end!r} (exponent {e:.6g}), inside the region {region!r}; "
-                            f"use the zones' SIFs there, or a region with Y_max < 0")
+            for end, e in self.singular_ends:
+                if x0 <= end <= x1:
+                    raise UnboundedStressError(
+                        f"the stresses are infinite at the singular contact end "
+                        f"X = {end!r} (exponent {e:.6g}), inside the region {region!r}; "
+                        f"use the zones' SIFs there, or a region with Y_max < 0")
 
         def half_width_at(X):
             return min(self.zones, key=lambda z: max(z.ends[0] - X, X - z.ends[1], 0.0)).width / 2

@@ -129,7 +129,7 @@ def subsurface_rows(mat, repeat=7):
     rows = []
     for m, limit in ((200, 0.05), (1000, 0.5)):
         X, Y = np.meshgrid(np.linspace(-3 * a, 3 * a, m), np.linspace(-3 * a, -a / m, m))
-        z = X - 1j * r._modes().eta_mid * Y
+        z = X - 1j * r._modes.eta_mid * Y
         base = best(lambda: r.solution.cauchy(z), max(1, repeat // 2))
         t = best(lambda: r.stress(X, Y), max(1, repeat // 2))
         rows.append((f"stress map {m} x {m} under a cylinder (n = 64, c = 0.6, mu = 0.3)", t,

@@ -13,7 +13,7 @@ import numpy as np
 
 import contact
 
-from .run import SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _inputs_text
+from .run import SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _inputs_text, progress_bar
 from .spec import SUBSURFACE_CUT, _fmt
 
 #: The subsurface figures show at most this many cases (small multiples); a longer sweep shows
@@ -85,29 +85,10 @@ def _write_json(result: SceneResult, path: Path) -> Path:
     return path
 
 
-class _NoBar:
-    def set_postfix_str(self, s, refresh=True):
-        pass
-
-    def update(self, n=1):
-        pass
-
-    def close(self):
-        pass
-
-
 def _writing_bar(total: int, progress: bool, immediate: bool = False):
     """The second phase of ``contact run``'s progress: the files being written (shown at once
     for a long sweep, whose result.json alone takes seconds; otherwise after half a second)."""
-    if not progress:
-        return _NoBar()
-    try:
-        from tqdm import tqdm
-    except ImportError:                      # tqdm is a dependency; be lenient all the same
-        return _NoBar()
-    import sys
-    return tqdm(total=total, desc="writing outputs", unit="file", delay=0 if immediate else 0.5,
-                file=sys.stderr, dynamic_ncols=True, leave=False)
+    return progress_bar(total, progress, "writing outputs", "file", 0 if immediate else 0.5)
 
 
 def check_out_dir(out_dir) -> None:

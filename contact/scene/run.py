@@ -243,12 +243,6 @@ def subsurface_axes(result, grid: SubsurfaceGrid | None = None) -> tuple:
     return gx, gy
 
 
-def singular_ends(result) -> list:
-    """The X of every contact end where the pressure is unbounded (exponent < 0)."""
-    return [end for z in result.zones
-            for end, e in ((z.ends[0], z.beta), (z.ends[1], z.alpha)) if e < 0]
-
-
 def subsurface(result, grid: SubsurfaceGrid | None = None) -> tuple:
     """The ``"subsurface"`` field of one case: (JSON entry, :class:`SubsurfaceMap`).
 
@@ -266,7 +260,7 @@ def subsurface(result, grid: SubsurfaceGrid | None = None) -> tuple:
     gx, gy = subsurface_axes(result, grid)
     xs, ys = gx.points(), gy.points()
     X, Y = np.meshgrid(xs, ys)                             # (ny, nx)
-    singular = singular_ends(result)
+    singular = [end for end, _ in result.singular_ends]
     infinite = (Y == 0.0) & np.isin(X, singular)
     comps = [np.full(X.shape, np.nan) for _ in range(3)]
     ok = ~infinite
@@ -309,12 +303,7 @@ def _auto_x(result) -> np.ndarray:
 
 def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
     """A curve field at X; NaN at a singular contact end, where it is infinite."""
-    finite = np.ones(X.shape, dtype=bool)
-    for z in result.zones:
-        if z.alpha < 0:
-            finite &= X != z.ends[1]
-        if z.beta < 0:
-            finite &= X != z.ends[0]
+    finite = ~np.isin(X, [end for end, _ in result.singular_ends])
     values = np.full(X.shape, np.nan)
     values[finite] = getattr(result, name)(X[finite])
     return values
@@ -424,19 +413,30 @@ def _inputs_text(inputs: dict) -> str:
 
 
 class _NoBar:
+    """The part of a tqdm bar used here, doing nothing (progress off)."""
     def update(self, n=1):
+        pass
+
+    def set_postfix_str(self, s, refresh=True):
         pass
 
     def close(self):
         pass
 
 
-def _progress_bar(total, progress):
-    if not progress or total < 2:
+def progress_bar(total, enabled, desc, unit, delay):
+    """A tqdm bar on stderr that clears itself when done, shown after ``delay`` seconds, or
+    one that does nothing when not ``enabled``."""
+    if not enabled:
         return _NoBar()
     try:
         from tqdm import tqdm
     except ImportError:                      # tqdm is a dependency; be lenient all the same
         return _NoBar()
-    return tqdm(total=total, desc="cases", unit="case", delay=1.0, file=sys.stderr,
+    return tqdm(total=total, desc=desc, unit=unit, delay=delay, file=sys.stderr,
                 dynamic_ncols=True, leave=False)
+
+
+def _progress_bar(total, progress):
+    """The cases' bar (from one second on; none for a single case)."""
+    return progress_bar(total, progress and total >= 2, "cases", "case", 1.0)
