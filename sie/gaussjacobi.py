@@ -58,7 +58,7 @@ import numpy as np
 from ._jit import jit
 from .errors import InvalidOrderError, check_exponent, check_order
 from ._dd import dd_add, dd_div, dd_mul, two_sum
-from .special import jacobi_moment, log_gamma_ratio
+from .special import _log_gamma_ratio, jacobi_moment, log_gamma_ratio
 
 __all__ = ["gauss_jacobi", "N_RECURRENCE_MAX", "N_BOUNDARY"]
 
@@ -490,60 +490,77 @@ def _half_count(n: int, a: float, b: float) -> int:
     return lo + int(np.count_nonzero(th[lo:] <= 0.5 * math.pi))
 
 
+@jit()
 def _split_exponent(c):
-    """c = m + f with m = max(0, round(c)) and f in (-1, 1/2]."""
-    m = max(0, int(round(c)))
+    """c = m + f with m = max(0, round(c)) (ties to even, as Python's round) and f in
+    (-1, 1/2]."""
+    r = math.floor(c)
+    frac = c - r
+    if frac > 0.5 or (frac == 0.5 and r % 2.0 != 0.0):
+        r += 1.0
+    m = max(0, int(r))
     return m, c - m          # exact: m <= 2c for m >= 1 (Sterbenz)
 
 
+@jit()
 def _scaled(h, l, e):
     """(h + l) 2^e with h renormalised to [0.5, 1) once it leaves [2^-500, 2^500)."""
     if 2.0 ** -500 <= abs(h) < 2.0 ** 500:
         return h, l, e
-    h, k = math.frexp(h)
-    return h, math.ldexp(l, -k), e + k
+    hm, k = math.frexp(h)
+    return hm, math.ldexp(l, -k), e + k
 
 
-def _shifted_ratio(z, c, d=None):
+@jit()
+def _shifted_ratio(z, c, d, with_d):
     """Gamma(z+c)/Gamma(z) / (Gamma(z+d+c)/Gamma(z+d)) for z >= 1 and c, d > -1
-    (Gamma(z+c)/Gamma(z) when d is None), as (v, e) with value v 2^e: no under/overflow.
+    (Gamma(z+c)/Gamma(z) when not ``with_d``), as (v, e) with value v 2^e: no
+    under/overflow.
 
     The integer part of c is a product (in double-double), only the rest goes through
-    log_gamma_ratio: exp(L) loses |L| ulps of L, and L ~ c ln z is ~140 for c = 20, n = 1000
-    (measured: C_n / P_n(1)^2 was 3e-14 off there, and so was every rung-2 weight)."""
+    the log-gamma ratio: exp(L) loses |L| ulps of L, and L ~ c ln z is ~140 for c = 20,
+    n = 1000 (measured: C_n / P_n(1)^2 was 3e-14 off there, and so was every rung-2 weight)."""
     m, f = _split_exponent(c)
     ph, pl, pe = 1.0, 0.0, 0
     for j in range(m):
         nh, nl = two_sum(z + j, f)                                    # z + f + j
-        if d is None:
+        if not with_d:
             ph, pl = dd_mul(ph, pl, nh, nl)
         else:
-            dh, dl = dd_add(*two_sum(z + j, d), f, 0.0)               # z + d + f + j
-            ph, pl = dd_mul(ph, pl, *dd_div(nh, nl, dh, dl))
+            sh, sl = two_sum(z + j, d)
+            dh, dl = dd_add(sh, sl, f, 0.0)                           # z + d + f + j
+            qh, ql = dd_div(nh, nl, dh, dl)
+            ph, pl = dd_mul(ph, pl, qh, ql)
         ph, pl, pe = _scaled(ph, pl, pe)
-    rest = log_gamma_ratio(z, f) - (0.0 if d is None else log_gamma_ratio(z + d, f))
+    rest = _log_gamma_ratio(z, f)
+    if with_d:
+        rest -= _log_gamma_ratio(z + d, f)
     return (ph + pl) * math.exp(rest), pe
 
 
+@jit()
 def _end_scale(n, a, b):
     """sqrt(C_n) / P_n(1), C_n = 2^{a+b+1} Gamma(n+a+1) Gamma(n+b+1) / (Gamma(n+a+b+1) n!)
     (Szegő 15.3.5), so that w = (_end_scale / (dQ_n/dtheta))^2 with Q_n = P_n / P_n(1).
 
     = 2^{(a+b+1)/2} G sqrt(R) with G = 1/P_n(1) = Gamma(a+1) n! / Gamma(n+a+1) and
     R = Gamma(n+a+1) Gamma(n+b+1) / (Gamma(n+a+b+1) n!) = 1 + O(ab/n), both without
-    exponentials of large logarithms (see _shifted_ratio): the old exp(log_gamma_ratio(..)
-    - log_gamma_ratio(..)) left every rung-2 weight 3e-14 off at n = 1000, alpha = 20.
+    exponentials of large logarithms (see _shifted_ratio; exp of a difference of
+    log-gamma ratios leaves every rung-2 weight 3e-14 off at n = 1000, alpha = 20).
     Powers of two are carried apart until the end: G and R underflow long before the
     weights do (G ~ a! n^-a is ~1e-150 at n = 2e4, alpha = 50; R ~ 2^-2200 at n = 2,
     alpha = beta = 1100)."""
     m, f = _split_exponent(a)
-    r, re = _shifted_ratio(n + 1.0, f)
+    r, re = _shifted_ratio(n + 1.0, f, 0.0, False)
     gh, gl, ge = math.gamma(1.0 + f) / r, 0.0, -re                  # Gamma(f+1) n!/Gamma(n+f+1)
     for j in range(1, m + 1):                                         # * prod (f+j)/(n+f+j)
-        gh, gl = dd_mul(gh, gl, *dd_div(*two_sum(f, float(j)), *two_sum(f, float(n + j))))
+        nh, nl = two_sum(f, float(j))
+        dh, dl = two_sum(f, float(n + j))
+        qh, ql = dd_div(nh, nl, dh, dl)
+        gh, gl = dd_mul(gh, gl, qh, ql)
         gh, gl, ge = _scaled(gh, gl, ge)
     lo, hi = (a, b) if a <= b else (b, a)
-    r, re = _shifted_ratio(n + 1.0, lo, hi)
+    r, re = _shifted_ratio(n + 1.0, lo, hi, True)
     if re % 2:
         r, re = 2.0 * r, re - 1
     e = 0.5 * (a + b + 1.0)
@@ -570,6 +587,7 @@ def _interior_weight_constant(n, a, b):
     return math.pi * 2.0 ** (a + b + 1.0) * math.exp(lg)
 
 
+@jit()
 def _dd_boundary(n, a, b, theta0, scale):
     """Nodes next to x = 1 by Newton on the dd hypergeometric series, with weights, and
     the mask of the nodes where dd sufficed (see _newton_boundary).
@@ -577,9 +595,12 @@ def _dd_boundary(n, a, b, theta0, scale):
     w = C_n / (dP_n/dtheta)^2,  dP_n/dtheta = P_n(1) Q_n'(t) sin(theta).
     """
     th, dqt, cancel = _newton_boundary(n, a, b, theta0)
-    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        w = (scale / (dqt * np.sin(th))) ** 2
-    return th, w, cancel < _DD_CANCEL_MAX        # NaN cancellation counts as not enough
+    w = np.empty(th.size)
+    ok = np.empty(th.size, np.bool_)
+    for i in range(th.size):
+        w[i] = (scale / (dqt[i] * math.sin(th[i]))) ** 2     # dq = 0: inf, caught by the caller
+        ok[i] = cancel[i] < _DD_CANCEL_MAX     # NaN cancellation counts as not enough
+    return th, w, ok
 
 
 def _boundary_nodes(n, a, b, theta0):
@@ -764,6 +785,73 @@ def _positive_angles(th0):
     return th0
 
 
+@jit()
+def _small_angles(x_sorted):
+    """Angles from the nearer end of the starting nodes ``x_sorted`` (ascending, all on one
+    side: x >= 0 measured from 1, else from -1 after reflection), as _positive_angles."""
+    m = x_sorted.size
+    th = np.empty(m)
+    for i in range(m):
+        th[i] = math.acos(min(max(x_sorted[i], -1.0), 1.0))
+    k = 0
+    while k < m and th[k] <= 0.0:
+        k += 1
+    if k:
+        top = th[k] if k < m else 1.0 / (m * m)
+        for i in range(k):
+            th[i] = top * (i + 1) / (k + 1)
+    return th
+
+
+@jit()
+def _small_rule(n, a, b):
+    """Rung 2 for n <= 2 N_BOUNDARY and exponents <= 5, compiled whole: Golub-Welsch
+    starting angles (a dense symmetric eigenvalue problem: at these sizes LAPACK called
+    from the kernel beats the Python round trip to dsterf), then every node by the dd
+    series of its end (:func:`_dd_boundary`).  Returns (x, w, ok); ``ok`` False when a half
+    has more than N_BOUNDARY nodes or the series cancelled past dd somewhere, and the
+    caller takes the general path.  One kernel call instead of ~20 small numpy and Python
+    steps: a new pair of exponents at n = 5 costs ~10 us instead of ~70 us."""
+    J = np.zeros((n, n))
+    J[0, 0] = (b - a) / (a + b + 2.0)
+    for k in range(1, n):
+        s = 2.0 * k + a + b
+        J[k, k] = (b * b - a * a) / (s * (s + 2.0))
+    for k in range(1, n):                       # off-diagonal entries k = 1..n-1
+        s1 = 2.0 * k + a + b
+        ratio = 1.0 if k == 1 else (k + a + b) / (s1 - 1.0)   # 0/0 at k = 1, a+b = -1: 1
+        off = 2.0 / s1 * math.sqrt(k * (k + a) * (k + b) * ratio / (s1 + 1.0))
+        J[k, k - 1] = off
+        J[k - 1, k] = off
+    guess = np.linalg.eigvalsh(J)               # ascending
+    n_left = 0
+    while n_left < n and guess[n_left] < 0.0:
+        n_left += 1
+    n_right = n - n_left
+    x = np.empty(n)
+    w = np.empty(n)
+    if n_left > N_BOUNDARY or n_right > N_BOUNDARY:
+        return x, w, False
+    th_r, w_r, ok_r = _dd_boundary(n, a, b, _small_angles(guess[n_left:][::-1].copy()),
+                                   _end_scale(n, a, b))
+    for i in range(n_right):
+        if not ok_r[i]:
+            return x, w, False
+        x[n - 1 - i] = math.cos(th_r[i])
+        w[n - 1 - i] = w_r[i]
+    if n_left:
+        th_l, w_l, ok_l = _dd_boundary(n, b, a, _small_angles(-guess[:n_left]),
+                                       _end_scale(n, b, a))
+        for i in range(n_left):
+            if not ok_l[i]:
+                return x, w, False
+            x[i] = -math.cos(th_l[i])
+            w[i] = w_l[i]
+    x[0] = max(x[0], -_X_INSIDE)
+    x[n - 1] = min(x[n - 1], _X_INSIDE)
+    return x, w, True
+
+
 def gauss_jacobi(n, alpha, beta):
     """Gauss-Jacobi nodes and weights.
 
@@ -808,6 +896,10 @@ def gauss_jacobi(n, alpha, beta):
         x1 = (b - a) / ((a + 1.0) + (b + 1.0))       # a + b + 2 without cancellation
         return np.clip([x1], -_X_INSIDE, _X_INSIDE), np.array([jacobi_moment(a, b)])
 
+    if n <= 2 * N_BOUNDARY and max(a, b) <= _ASY_MAX_PARAM:
+        x, w, ok = _small_rule(n, a, b)
+        if ok:
+            return x, w
     if n <= N_RECURRENCE_MAX or max(a, b) > _ASY_MAX_PARAM:
         guess = _golub_welsch_guess(n, a, b)
         right = guess >= 0.0

@@ -11,7 +11,7 @@ import functools
 import numpy as np
 
 from ._jit import jit
-from .special import jacobi_norm
+from .special import _jacobi_norm
 
 __all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms",
            "jacobi_norms_cached", "plateau_start"]
@@ -80,16 +80,25 @@ def _blocks(n, m):
     return (slice(i, min(i + rows, m)) for i in range(0, m, rows))
 
 
-def _norm_ratios(n, a, b, h1):
-    """h_k for k = 1..n-1 from h_1 by h_{k+1}/h_k (DLMF Table 18.3.1); a cumulative
-    product in numpy (no compiled kernel needed)."""
+@jit()
+def _jacobi_norms(n, a, b):
+    """h_k, k = 0..n-1: h_0 and h_1 in closed form, the rest from h_1 by the ratios
+    h_{k+1}/h_k (DLMF Table 18.3.1), multiplied up in order.  Compiled: the contact layer
+    asks for the norms of every new pair of exponents (a handful of numpy calls on
+    arrays of two or six entries cost ~20 us; the kernel ~1 us)."""
     h = np.zeros(n)
+    if n == 0:
+        return h
+    h[0] = _jacobi_norm(0, a, b)
     if n > 1:
-        k = np.arange(1, n - 1, dtype=float)
-        s = 2.0 * k + a + b
-        ratio = (s + 1.0) * (k + a + 1.0) * (k + b + 1.0) / ((s + 3.0) * (k + a + b + 1.0) * (k + 1.0))
+        h1 = _jacobi_norm(1, a, b)
         h[1] = h1
-        h[2:] = h1 * np.cumprod(ratio)
+        prod = 1.0
+        for k in range(1, n - 1):
+            s = 2.0 * k + a + b
+            prod *= (s + 1.0) * (k + a + 1.0) * (k + b + 1.0) / (
+                (s + 3.0) * (k + a + b + 1.0) * (k + 1.0))
+            h[k + 1] = h1 * prod
     return h
 
 
@@ -138,7 +147,8 @@ def jacobi_norms(n, a, b):
 def jacobi_norms_cached(n, a, b):
     """:func:`jacobi_norms`, memoised and read-only."""
     # memoised: the contact layer re-solves equations of the same exponents many times
-    h = _norm_ratios(n, a, b, jacobi_norm(1, a, b) if n > 1 else 0.0)
-    h[0] = jacobi_norm(0, a, b)
+    if not (a > -1.0 and b > -1.0):
+        raise ValueError(f"jacobi_norms needs a, b > -1, got {a!r}, {b!r}")
+    h = _jacobi_norms(n, a, b)
     h.flags.writeable = False
     return h

@@ -68,18 +68,34 @@ def jacobi_moment(alpha: float, beta: float) -> float:
 
     DLMF 5.12.1; also Zhou et al. 2014, eq. (5.5).
     """
+    if not (alpha > -1.0 and beta > -1.0):
+        raise ValueError(f"jacobi_moment needs alpha, beta > -1, got {alpha!r}, {beta!r}")
+    return _jacobi_moment(float(alpha), float(beta))
+
+
+@jit()
+def _jacobi_moment(alpha, beta):
     # B(a+1, b+1) = Gamma(a+1) Gamma(b+1) / Gamma(a+b+2); use the ratio form for accuracy
     return 2.0 ** (alpha + beta + 1.0) * math.gamma(alpha + 1.0) * math.exp(
-        -log_gamma_ratio(beta + 1.0, alpha + 1.0))
+        -_log_gamma_ratio(beta + 1.0, alpha + 1.0))
 
 
 def jacobi_norm(k: int, alpha: float, beta: float) -> float:
     """h_k = int w P_k^{(alpha,beta)}^2 (DLMF 18.3, Table 18.3.1)."""
+    if not (alpha > -1.0 and beta > -1.0) or k < 0:
+        raise ValueError(f"jacobi_norm needs k >= 0 and alpha, beta > -1, got {k!r}, "
+                         f"{alpha!r}, {beta!r}")
+    return _jacobi_norm(int(k), float(alpha), float(beta))
+
+
+@jit()
+def _jacobi_norm(k, alpha, beta):
     if k == 0:
-        return jacobi_moment(alpha, beta)
+        return _jacobi_moment(alpha, beta)
     # h_k = 2^{a+b+1}/(2k+a+b+1) * Gamma(k+a+1)Gamma(k+b+1)/(Gamma(k+a+b+1) k!)
     return (2.0 ** (alpha + beta + 1.0) / (2 * k + alpha + beta + 1.0)
-            * math.exp(log_gamma_ratio(k + 1.0, alpha) + log_gamma_ratio(k + alpha + beta + 1.0, -alpha)))
+            * math.exp(_log_gamma_ratio(k + 1.0, alpha)
+                       + _log_gamma_ratio(k + alpha + beta + 1.0, -alpha)))
 
 
 def gauss_jacobi_constant(n: int, alpha: float, beta: float) -> float:
