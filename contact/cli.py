@@ -137,26 +137,42 @@ def _error(message: str):
 # contact run
 # --------------------------------------------------------------------------
 def cmd_run(args) -> int:
+    """Solve the scene's cases and write each as it comes (:func:`contact.scene.iter_scene`
+    into a :class:`contact.scene.SceneWriter`): memory does not grow with the sweep."""
     scene = scenes.load_scene(args.scene) if args.scene else scenes.default_scene()
     try:                                       # before anything is solved
         scenes.check_out_dir(args.out)
     except OSError as exc:
         raise UsageError(f"--out {args.out}: {exc}") from None
-    with _executor(args.jobs, args.scheduler) as executor:
-        result = scenes.run_scene(scene, executor=executor, progress=not args.quiet)
-    if not args.quiet:
-        print(scenes.format_table(result), flush=True)
-    try:
-        written = scenes.write_outputs(result, args.out,
-                                       figures=None if args.figures else False,
-                                       progress=not args.quiet)
-    except OSError as exc:
-        raise OSError(f"cannot write the outputs into --out {args.out}: {exc}") from None
-    for message in result.warnings:
+    progress = not args.quiet
+    with _writing_into(args.out):
+        writer = scenes.SceneWriter(scene, args.out, scene.case_count,
+                                    figures=None if args.figures else False)
+    with writer:
+        with _executor(args.jobs, args.scheduler) as executor:
+            run = scenes.iter_scene(scene, executor=executor, progress=progress)
+            for res in run:
+                with _writing_into(args.out):
+                    writer.add(res)
+        if progress:
+            print(writer.table(run.timing_s), flush=True)
+        messages = run.warnings                # a figure that cannot be drawn adds its own
+        with _writing_into(args.out):
+            written = writer.finish(run.timing_s, messages, progress=progress)
+    for message in messages:
         print(f"contact: warning: {message}", file=sys.stderr)
-    if not args.quiet:
+    if progress:
         print(f"  wrote {', '.join(str(p) for p in written)}")
     return 0
+
+
+@contextlib.contextmanager
+def _writing_into(out):
+    """An OSError while the outputs are written names --out."""
+    try:
+        yield
+    except OSError as exc:
+        raise OSError(f"cannot write the outputs into --out {out}: {exc}") from None
 
 
 @contextlib.contextmanager
@@ -237,7 +253,7 @@ def cmd_constants(args) -> int:
     if args.speed is not None:
         speeds = [args.speed]
     elif scene is not None:
-        speeds = list(dict.fromkeys(case.speed for case in scene.cases()))
+        speeds = list(dict.fromkeys(case.speed for case in scene.iter_cases()))
     else:
         raise UsageError("contact constants needs --speed C (or a scene whose [motion] gives "
                          "the speeds)")

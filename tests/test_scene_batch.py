@@ -1,6 +1,7 @@
 """Chunked execution of a scene's cases (contact.scene.batch): chunk sizes, grouping by
 (material, speed), scene order and per-case errors through a process pool and a Dask
-cluster, results identical to a serial run."""
+cluster, results identical to a serial run.  (Streaming -- results in order as they complete,
+a bounded window, bounded memory -- is tested in test_scene_stream.py.)"""
 from __future__ import annotations
 
 from collections import namedtuple
@@ -9,9 +10,8 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 import pytest
 
 import contact
-from contact.scene import CaseError, load_scene, run_scene
+from contact.scene import load_scene, run_scene
 from contact.scene import batch
-from contact.scene.run import _map_in_order
 
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
 
@@ -39,42 +39,56 @@ def test_chunk_size_targets_the_time_and_the_balance():
     assert batch.chunk_size(1, 8, 1e-5) == 1
 
 
+def chunked(cases, size, lag=1000):
+    """Every chunk batch.Chunker hands out for ``cases``, in the order it does."""
+    chunker = batch.Chunker(size, lag)
+    return [chunk for case in cases for chunk in chunker.add(case)] + chunker.flush()
+
+
+def indices(chunks):
+    return [[c.index for c in chunk] for chunk in chunks]
+
+
 def test_chunks_share_material_and_speed():
     cases = fake_cases(10, speeds=(0.0, 0.3))
-    chunks = batch.chunks_of(cases, 3)
+    chunks = sorted(chunked(cases, 3), key=lambda ch: ch[0].index)
     assert [c.index for ch in chunks for c in ch] == list(range(10))
     assert all(len({(c.material, c.speed) for c in ch}) == 1 for ch in chunks)
     assert [len(ch) for ch in chunks] == [3, 2, 3, 2]       # a chunk ends where the speed changes
     # speed varying fastest (friction swept first): still full chunks of one speed
     mixed = [FakeCase(i, "m", (0.0, 0.3)[i % 2], {}) for i in range(10)]
-    chunks = batch.chunks_of(mixed, 3)
-    assert [[c.index for c in ch] for ch in chunks] == [[0, 2, 4], [6, 8], [1, 3, 5], [7, 9]]
+    assert indices(chunked(mixed, 3)) == [[0, 2, 4], [1, 3, 5], [6, 8], [7, 9]]
+
+
+def test_a_rare_key_is_cut_once_it_lags():
+    """Case 0 alone at its speed: its chunk is handed out once the newest case read is
+    ``lag`` cases after it, not at the end."""
+    cases = [FakeCase(0, "m", 0.9, {})] + [FakeCase(i, "m", 0.3, {}) for i in range(1, 9)]
+    chunker = batch.Chunker(3, 4)
+    out = [indices(chunker.add(case)) for case in cases]
+    assert out == [[], [], [], [[1, 2, 3]], [[0]], [], [[4, 5, 6]], [], []]
+    assert indices(chunker.flush(below=8)) == [[7]]         # after a failure at case 8
 
 
 @pytest.mark.parametrize("pool", ["serial", "threads", "processes"])
-def test_first_failure_in_scene_order_is_reported(pool):
+def test_first_failure_in_scene_order_ends_the_results(pool):
     cases = fake_cases(40)
     if pool == "serial":
-        done = batch.map_chunked(double_or_fail, cases, None, lambda k: None)
-        assert sorted(done) == list(range(6))          # stops at the first failure
+        got = list(batch.iter_chunked(double_or_fail, cases, None, lambda k: None, 40))
     else:
         make = ThreadPoolExecutor if pool == "threads" else ProcessPoolExecutor
         with make(2) as ex:
-            done = batch.map_chunked(double_or_fail, cases, ex, lambda k: None)
-        assert all(done[i] == 2 * i for i in range(5))  # every case before it ran
-        assert isinstance(done[5], contact.LoadError)
-
-    class Scene:
-        source = "s.toml"
-    with pytest.raises(CaseError, match=r"s.toml: case 5 .*LoadError: case 5 fails"):
-        _map_in_order(double_or_fail, cases, None, False, Scene())
+            got = list(batch.iter_chunked(double_or_fail, iter(cases), ex, lambda k: None, 40))
+    assert [c.index for c, _ in got] == list(range(6))      # in order, up to the failure
+    assert all(res == 2 * c.index for c, res in got[:5])
+    assert isinstance(got[5][1], contact.LoadError)
 
 
 def test_progress_counts_cases():
     counted = []
     cases = fake_cases(12)
     with ThreadPoolExecutor(2) as ex:
-        batch.map_chunked(lambda c: c.index, cases, ex, counted.append)
+        list(batch.iter_chunked(lambda c: c.index, cases, ex, counted.append, 12))
     assert sum(counted) == 12
 
 

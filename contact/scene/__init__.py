@@ -101,7 +101,16 @@ face takes neither ``breaks`` (the spline's knots are handled by the interpolant
   the ``[outputs] x`` grid (its curves miss part of the contact), named by case.
 
 ``--out`` must be a writable directory (or creatable); ``contact run`` checks it before
-solving anything and exits with status 2 otherwise.
+solving anything and exits with status 2 otherwise.  It prints a table of the cases (the
+first and the last 20 of a longer sweep, and each column's smallest and largest value).
+
+**Long sweeps** run in bounded memory: ``contact run`` builds the cases as they are needed
+(:meth:`Scene.iter_cases`), solves a bounded number ahead (:func:`iter_scene`, in scene order
+as they complete, serially or through a pool) and writes each as it comes
+(:class:`SceneWriter`: result.json case by case, sweep.csv and the curve CSVs through spool
+files on disk, only the cases the figures draw kept); the outputs appear in ``--out`` when
+every case is done, and a case that fails leaves none.  :func:`run_scene` keeps every case
+(:class:`SceneResult`) for use in Python.
 
 **Several contact zones**: the contact is found from first touch, so a face with several
 valleys can touch in several zones.  A case with one zone writes ``ends``, ``exponents`` and
@@ -153,13 +162,14 @@ file, the key and what is allowed, raised by :func:`load_scene` before anything 
 """
 from __future__ import annotations
 
-from .output import check_out_dir, format_table, write_outputs
+from .output import SceneWriter, check_out_dir, format_table, write_outputs
 from .parse import default_scene, load_scene, parse_scene_text
-from .run import CaseResult, SceneResult, SubsurfaceMap, run_case, run_scene
+from .run import CaseResult, SceneResult, SceneRun, SubsurfaceMap, iter_scene, run_case, run_scene
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,
                    Numerics, PunchSpec, Scene, SceneError, SubsurfaceGrid, XGrid)
 
-__all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "SceneResult", "MaterialSpec",
-           "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics", "load_scene",
-           "parse_scene_text", "default_scene", "run_scene", "run_case", "write_outputs",
-           "check_out_dir", "format_table", "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]
+__all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "SceneResult", "SceneRun",
+           "MaterialSpec", "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics",
+           "load_scene", "parse_scene_text", "default_scene", "run_scene", "iter_scene",
+           "run_case", "write_outputs", "SceneWriter", "check_out_dir", "format_table",
+           "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]

@@ -11,21 +11,32 @@ pickling).  Cases therefore travel in chunks:
   chunks per worker so that a slow chunk does not leave the others idle;
 * each worker builds a material and a punch once per distinct spec (:func:`build_once`).
 
-A case that fails in the library comes back as its exception, and the caller raises the first
-one in scene order (a :class:`~contact.scene.spec.CaseError` naming the case), as a serial run
-would.
+Cases are read from an iterator as they are needed and their results come back in its order
+(:func:`iter_chunked`), so that a sweep runs in memory that does not grow with its length: at
+most ``CHUNKS_AHEAD`` full chunks per worker are read past the first case not yet delivered
+(those running, and those done early that wait for it), and a group of cases sharing
+(material, speed) is cut into a chunk when it is full or when its first case is half that
+window behind the newest case read (:class:`Chunker`).
+
+A case that fails in the library comes back as its exception; the results stop after the first
+one in scene order, and the chunks after it are cancelled, so that the caller can raise it (a
+:class:`~contact.scene.spec.CaseError` naming the case) as a serial run would.
 """
 from __future__ import annotations
 
+import collections
 import functools
+import itertools
 import math
 import time
-from concurrent.futures import as_completed
+from concurrent.futures import FIRST_COMPLETED, wait
 
 #: Seconds of solving a chunk aims at (tens of milliseconds: well above a task's overhead).
 TARGET_CHUNK_S = 0.05
 #: At least this many chunks per worker, for balance.
 CHUNKS_PER_WORKER = 4
+#: Full chunks per worker read past the first case not yet delivered.
+CHUNKS_AHEAD = 8
 #: Cases solved here first, to size the chunks (the fastest of them counts).
 _PROBE = 3
 
@@ -71,15 +82,38 @@ def chunk_size(n_cases, workers, seconds_per_case):
     return max(1, min(by_time, by_balance))
 
 
-def chunks_of(cases, size):
-    """Chunks of at most ``size`` cases that share material and speed: the cases grouped by
-    (material, speed) in the order the groups first appear, each group cut in scene order
-    (results are put back in scene order by the caller, whatever key the scene sweeps
-    first)."""
-    groups = {}
-    for case in cases:
-        groups.setdefault((case.material, case.speed), []).append(case)
-    return [g[i:i + size] for g in groups.values() for i in range(0, len(g), size)]
+class Chunker:
+    """Cases grouped by (material, speed) as they are read, handed out as chunks in scene order
+    within each: a group when it holds ``size`` cases, or when its first case is ``lag`` cases
+    behind the newest one read (so that a case whose key is rare does not wait for others of
+    its key while the cases after it are solved)."""
+
+    def __init__(self, size: int, lag: int):
+        self.size, self.lag = size, lag
+        self._groups = {}              # key -> (position of its first case, cases); oldest first
+        self._read = 0
+
+    def add(self, case) -> list:
+        """The chunks ready once ``case`` is read."""
+        key = (case.material, case.speed)
+        if key not in self._groups:
+            self._groups[key] = (self._read, [])
+        group = self._groups[key][1]
+        group.append(case)
+        self._read += 1
+        ready = [self._groups.pop(key)[1]] if len(group) == self.size else []
+        while self._groups:
+            oldest, (first, group) = next(iter(self._groups.items()))
+            if self._read - 1 - first < self.lag:
+                break
+            ready.append(self._groups.pop(oldest)[1])
+        return ready
+
+    def flush(self, below=math.inf) -> list:
+        """Every group left as a chunk, keeping its cases whose index is below ``below``."""
+        chunks = [[c for c in group if c.index < below] for _, group in self._groups.values()]
+        self._groups.clear()
+        return [chunk for chunk in chunks if chunk]
 
 
 def worker_count(executor) -> int:
@@ -97,52 +131,92 @@ def worker_count(executor) -> int:
     return 1
 
 
-def map_chunked(fn, cases, executor, on_done):
-    """{index: result or exception} for the cases run.
+def iter_chunked(fn, cases, executor, on_done, total: int):
+    """(case, fn(case) or its exception) for each case of the iterable ``cases``, in its order,
+    ending after the first exception (a library input error, see :func:`run_chunk`).
 
-    ``executor`` None: every case here, one after the other.  Otherwise the first three cases
-    run here (the fastest sizes the chunks), the rest go to ``executor`` in chunks
-    (:func:`chunk_size`, :func:`chunks_of`).  Once a case fails, chunks that start after it
-    are cancelled and those before it are awaited, so the first failure in scene order is
-    among the results.  ``on_done(k)`` is called as k cases finish.
+    ``executor`` None (or fewer than two cases): every case here, one after the other.
+    Otherwise the first three cases run here (the fastest sizes the chunks: :func:`chunk_size`
+    for the ``total`` cases), the rest go to ``executor`` in chunks of one (material, speed)
+    (:class:`Chunker`), at most ``CHUNKS_AHEAD`` full chunks per worker read past the first
+    case not yet delivered.  Once a case fails, the chunks after it are cancelled and those
+    before it awaited.  ``on_done(k)`` is called as k cases finish.
     """
-    done = {}
-
-    def collect(items):
-        for index, res in items:
-            done[index] = res
-        on_done(len(items))
-        return min((i for i, r in items if isinstance(r, Exception)), default=None)
-
-    if executor is None or len(cases) < 2:
+    cases = iter(cases)
+    if executor is None or total < 2:
         for case in cases:
-            if collect(run_chunk(fn, [case])) is not None:
-                break
-        return done
+            res = _run_here(fn, case, on_done)
+            yield case, res
+            if isinstance(res, Exception):
+                return
+        return
     per_case = math.inf
-    for case in cases[:_PROBE]:           # the first is slower (caches fill): take the fastest
+    for case in itertools.islice(cases, _PROBE):    # the first is slower (caches fill)
         t0 = time.perf_counter()
-        if collect(run_chunk(fn, [case])) is not None:
-            return done
+        res = _run_here(fn, case, on_done)
         per_case = min(per_case, time.perf_counter() - t0)
-    rest = cases[_PROBE:]
-    if not rest:
-        return done
-    size = chunk_size(len(rest), worker_count(executor), per_case)
-    futures = {executor.submit(run_chunk, fn, chunk): chunk[0].index
-               for chunk in chunks_of(rest, size)}
+        yield case, res
+        if isinstance(res, Exception):
+            return
+    workers = worker_count(executor)
+    size = chunk_size(max(total - _PROBE, 1), workers, per_case)
+    yield from _windowed(fn, cases, executor, size, CHUNKS_AHEAD * workers * size, on_done)
+
+
+def _run_here(fn, case, on_done):
+    """fn(case) or its library input error, in this process."""
+    ((_, res),) = run_chunk(fn, [case])
+    on_done(1)
+    return res
+
+
+def _windowed(fn, cases, executor, size, ahead, on_done):
+    """The cases after the probe (:func:`iter_chunked`): read while fewer than ``ahead`` wait
+    for delivery, grouped into chunks (:class:`Chunker`, a group cut when its first case is
+    ``ahead // 2`` behind the newest read, so that the first case waiting is always submitted
+    before reading stops), submitted to ``executor``, delivered in order."""
+    waiting = collections.deque()       # cases read and not yet delivered, in order
+    ready = {}                          # index -> result, for cases of ``waiting``
+    chunker = Chunker(size, max(1, ahead // 2))
+    running = {}                        # future -> index of its chunk's first case
+    failed = math.inf                   # index of the first failing case known
+    unread = True
+
+    def submit(chunks):
+        for chunk in chunks:
+            running[executor.submit(run_chunk, fn, chunk)] = chunk[0].index
+
     try:
-        failed = math.inf
-        for fut in as_completed(futures):
-            if fut.cancelled():
-                continue
-            bad = collect(fut.result())
-            if bad is not None and bad < failed:
-                failed = bad
-                for other, first in futures.items():
-                    if first > failed:
-                        other.cancel()
+        while True:
+            while unread and failed == math.inf and len(waiting) < ahead:
+                case = next(cases, None)
+                if case is None:
+                    unread = False
+                    break
+                waiting.append(case)
+                submit(chunker.add(case))
+            if not unread or failed < math.inf:
+                submit(chunker.flush(below=failed))
+            while waiting and waiting[0].index in ready:
+                case = waiting.popleft()
+                res = ready.pop(case.index)
+                yield case, res
+                if isinstance(res, Exception):
+                    return
+            if not waiting:
+                return
+            done, _ = wait(running, return_when=FIRST_COMPLETED)
+            for fut in done:
+                del running[fut]
+                if fut.cancelled():
+                    continue
+                items = fut.result()
+                on_done(len(items))
+                ready.update(items)
+                failed = min([failed] + [i for i, r in items if isinstance(r, Exception)])
+            for fut, first in list(running.items()):
+                if first > failed and fut.cancel():
+                    del running[fut]
     finally:
-        for fut in futures:
+        for fut in running:
             fut.cancel()
-    return done

@@ -523,7 +523,7 @@ class _Parser:
         material = scene.material.build()
         c_R = contact.rayleigh_speed(material)
         key = "motion.velocity" if "velocity" in scene.motion else "motion.speed"
-        for case in scene.cases():
+        for case in scene.iter_cases():
             c = case.speed
             if not c < c_R:
                 shown = (f"velocity = {case.inputs['velocity']!r} (relative speed c = {c!r})"

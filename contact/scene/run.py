@@ -15,8 +15,8 @@ import numpy as np
 import contact
 import sie
 
-from .batch import build_once, map_chunked
-from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError, MaterialSpec,
+from .batch import build_once, iter_chunked
+from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
                    SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
 
@@ -107,13 +107,8 @@ class SceneResult:
 
     def to_json(self) -> dict:
         """The content of result.json."""
-        return {"scene": self.scene.echo(),
-                "scene_file": self.scene.source,
-                "cases": [_json_case(c) for c in self.cases],
-                "version": _version(),
-                "timing_s": self.timing_s,
-                "units": UNITS,
-                "warnings": list(self.warnings)}
+        return {**_json_head(self.scene), "cases": [_json_case(c) for c in self.cases],
+                **_json_tail(self.timing_s, self.warnings)}
 
     def table(self) -> tuple:
         """The tidy sweep table of sweep.csv: (column names, rows), one row per case in scene
@@ -131,6 +126,17 @@ class SceneResult:
         """
         from .table import to_dataframe
         return to_dataframe(self)
+
+
+def _json_head(scene: Scene) -> dict:
+    """The keys of result.json before ``cases``."""
+    return {"scene": scene.echo(), "scene_file": scene.source}
+
+
+def _json_tail(timing_s: float, messages) -> dict:
+    """The keys of result.json after ``cases``."""
+    return {"version": _version(), "timing_s": timing_s, "units": UNITS,
+            "warnings": list(messages)}
 
 
 def _json_case(res) -> dict:
@@ -309,29 +315,116 @@ def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
     return values
 
 
-def speed_fields(material: MaterialSpec, speeds, fields) -> dict:
-    """Roots and/or surface constants once per distinct speed: {speed: {field: value}}."""
-    wanted = [f for f in fields if f in SPEED_FIELDS]
-    if not wanted:
-        return {}
-    m = material.build()
+def speed_entry(material: contact.Orthotropic, speed: float, fields) -> dict:
+    """The per-speed fields (roots and/or surface constants) asked among ``fields`` at one
+    speed: {field: value}."""
     out = {}
-    for c in dict.fromkeys(speeds):
-        out[c] = {}
-        if "constants" in wanted:
-            k = contact.surface_constants(m, c)
-            out[c]["constants"] = {"N11": k.N11, "N12": k.N12, "N21": k.N21, "N22": k.N22,
-                                   "rayleigh_speed": k.rayleigh_speed,
-                                   "eta_product": k.eta_product, "eta_sum": k.eta_sum}
-        if "roots" in wanted:
-            r = m.characteristic_roots(c)
-            out[c]["roots"] = {"real": (r.real + 0.0).tolist(), "imag": (r.imag + 0.0).tolist()}
+    if "constants" in fields:
+        k = contact.surface_constants(material, speed)
+        out["constants"] = {"N11": k.N11, "N12": k.N12, "N21": k.N21, "N22": k.N22,
+                            "rayleigh_speed": k.rayleigh_speed,
+                            "eta_product": k.eta_product, "eta_sum": k.eta_sum}
+    if "roots" in fields:
+        r = material.characteristic_roots(speed)
+        out["roots"] = {"real": (r.real + 0.0).tolist(), "imag": (r.imag + 0.0).tolist()}
     return out
+
+
+def iter_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
+               ) -> SceneRun:
+    """The cases of a scene solved one after the other, or through ``executor``, delivered in
+    scene order as they complete (:class:`SceneRun`); nothing is solved until it is iterated.
+
+    Parameters are those of :func:`run_scene`.  The cases are built as they are needed and a
+    bounded number of them is solved ahead of the consumer
+    (:func:`contact.scene.batch.iter_chunked`): a consumer that keeps nothing per case (the
+    writers of ``contact run``, :class:`contact.scene.output.SceneWriter`) runs a sweep of any
+    length in bounded memory.
+    """
+    return SceneRun(scene, executor, progress)
+
+
+class SceneRun:
+    """A scene being run: iterate it (once) for its :class:`CaseResult` in scene order.
+
+    Attributes
+    ----------
+    scene : Scene
+    count : int
+        How many cases it has.
+    timing_s : float
+        Seconds spent solving so far (the consumer's time between two cases not counted,
+        workers of an executor may solve meanwhile); the run's time once iterated.
+    warnings : list of str
+        The run's warnings so far (those computing the per-speed fields, then each case's,
+        named by case); all of them once iterated.
+
+    Raises
+    ------
+    CaseError
+        While iterated, at the first case (in scene order) that fails in the library.
+    """
+
+    def __init__(self, scene: Scene, executor: Executor | None = None, progress: bool = False):
+        self.scene, self.count = scene, scene.case_count
+        self.timing_s = 0.0
+        self._executor, self._progress = executor, progress
+        self._speed_warnings = {}           # scene-wide messages, once each
+        self._case_warnings = []
+        self._per_speed = {}                # speed -> its per-speed fields
+        self._results = self._solve()
+
+    @property
+    def warnings(self) -> list:
+        """The run's warnings so far, a new list (see the class docstring)."""
+        return list(self._speed_warnings) + self._case_warnings
+
+    def __iter__(self):
+        return self._results
+
+    def _solve(self):
+        """The generator behind iteration: solve, add the per-speed fields, name a failing
+        case, collect warnings, time."""
+        per_speed = any(name in SPEED_FIELDS for name in self.scene.fields)
+        t0 = time.perf_counter()
+        bar = _progress_bar(self.count, self._progress)
+        try:
+            for case, res in iter_chunked(run_case, self.scene.iter_cases(), self._executor,
+                                          bar.update, self.count):
+                if isinstance(res, Exception):
+                    with _naming(case, self.scene):
+                        raise res
+                if per_speed:
+                    res.entry = _with_speed_fields(res.entry, self._speed_fields(case.speed),
+                                                   self.scene.fields)
+                self._case_warnings += [f"case {res.index} ({res.label}): {w}"
+                                        for w in res.warnings]
+                self.timing_s += time.perf_counter() - t0
+                t0 = None                          # the consumer's time is not the run's
+                yield res
+                t0 = time.perf_counter()
+        finally:
+            bar.close()
+            if t0 is not None:
+                self.timing_s += time.perf_counter() - t0
+
+    def _speed_fields(self, speed) -> dict:
+        """The per-speed fields at ``speed``, computed at its first case (their warnings are
+        the run's, once each)."""
+        if speed not in self._per_speed:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                self._per_speed[speed] = speed_entry(build_once(self.scene.material), speed,
+                                                     self.scene.fields)
+            self._speed_warnings.update(dict.fromkeys(
+                f"{w.category.__name__}: {w.message}" for w in caught))
+        return self._per_speed[speed]
 
 
 def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
               ) -> SceneResult:
-    """Run every case of a scene, in scene order.
+    """Run every case of a scene, in scene order, and keep them all (:func:`iter_scene`, the
+    streaming run, collected).
 
     Parameters
     ----------
@@ -350,19 +443,9 @@ def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = F
         If a case fails in the library (e.g. the profile would lose contact); the message
         names the case.
     """
-    cases = scene.cases()
-    t0 = time.perf_counter()
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        shared = speed_fields(scene.material, [c.speed for c in cases], scene.fields)
-    results = _map_in_order(run_case, cases, executor, progress, scene)
-    for res, case in zip(results, cases):
-        if case.speed in shared:
-            res.entry = _with_speed_fields(res.entry, shared[case.speed], scene.fields)
-    messages = list(dict.fromkeys(f"{w.category.__name__}: {w.message}" for w in caught))
-    for res in results:
-        messages += [f"case {res.index} ({res.label}): {w}" for w in res.warnings]
-    return SceneResult(scene, results, time.perf_counter() - t0, messages)
+    run = iter_scene(scene, executor, progress)
+    cases = list(run)
+    return SceneResult(scene, cases, run.timing_s, run.warnings)
 
 
 def _with_speed_fields(entry: dict, per_speed: dict, fields) -> dict:
@@ -375,25 +458,6 @@ def _with_speed_fields(entry: dict, per_speed: dict, fields) -> dict:
             out[name] = entry[name]
         elif name in ZONE_FIELDS and "zones" in entry:
             out["zones"] = entry["zones"]
-    return out
-
-
-def _map_in_order(fn, cases, executor, progress, scene):
-    """[fn(case) for case in cases], in this process or through ``executor`` in chunks
-    (:func:`contact.scene.batch.map_chunked`); the first of the library's input errors in
-    scene order becomes a CaseError naming the case."""
-    bar = _progress_bar(len(cases), progress)
-    try:
-        done = map_chunked(fn, cases, executor, bar.update)
-    finally:
-        bar.close()
-    out = []
-    for case in cases:
-        res = done[case.index]
-        if isinstance(res, Exception):
-            with _naming(case, scene):
-                raise res
-        out.append(res)
     return out
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 import functools
 import itertools
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -261,20 +262,28 @@ class Scene:
     figures: bool = True
 
     def cases(self) -> list[Case]:
-        """The Cartesian product of the swept values, the first swept key varying slowest."""
+        """Every case, in scene order (:meth:`iter_cases` as a list)."""
+        return list(self.iter_cases())
+
+    def iter_cases(self) -> Iterator[Case]:
+        """The cases one at a time, built as they are asked for: the Cartesian product of the
+        swept values, the first swept key varying slowest."""
         swept = [self._section(sec)[key] for sec, key in self.sweep]
-        out = []
         for index, values in enumerate(itertools.product(*swept)):
             point = dict(zip(self.sweep, values))
             punch = {k: point.get(("punch", k), v) for k, v in self.punch.items()}
             motion = {k: point.get(("motion", k), v) for k, v in self.motion.items()}
             label = ", ".join(f"{key} = {_fmt(v)}" for (_, key), v in point.items())
-            out.append(Case(index=index, label=label or self.title,
-                            inputs=_case_inputs(self.material, punch, motion),
-                            material=self.material, punch=_punch_spec(punch, self.base_dir),
-                            fields=self.fields, x=self.x, numerics=self.numerics,
-                            grid=self.grid))
-        return out
+            yield Case(index=index, label=label or self.title,
+                       inputs=_case_inputs(self.material, punch, motion),
+                       material=self.material, punch=_punch_spec(punch, self.base_dir),
+                       fields=self.fields, x=self.x, numerics=self.numerics, grid=self.grid)
+
+    @property
+    def case_count(self) -> int:
+        """How many cases the scene has (the product of the swept lists' lengths), without
+        building them."""
+        return math.prod(len(self._section(sec)[key]) for sec, key in self.sweep)
 
     def _section(self, name):
         return self.punch if name == "punch" else self.motion

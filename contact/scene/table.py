@@ -43,19 +43,112 @@ DIAGNOSTICS_COLUMNS = ("n", "residual", "load_check")
 PANDAS_HINT = "pip install 'sie-contact[pandas]'"
 
 
-def input_columns(result) -> list:
-    """The inputs that vary across the scene (every input when it has one case)."""
-    scene = result.scene
-    if not scene.sweep or len(result.cases) == 1:
-        return list(result.cases[0].entry["inputs"]) if result.cases else []
-    swept = [key for _, key in scene.sweep]
-    if "velocity" in swept and "speed" not in swept:
-        swept.append("speed")
-    return swept
+class SweepTable:
+    """The sweep table built one case at a time.
 
+    :meth:`row` gives a case's cells in a layout of its own ("raw": the case, its inputs, its
+    number of zones, each zone's cells, then the rest), so that rows can be kept (or written
+    to disk) as the cases come; once every case is in, :meth:`columns` and :meth:`lay_out`
+    give the table of the module docstring, whose zone columns depend on the largest number
+    of zones in the sweep.
 
-def _several_zones(result) -> bool:
-    return "zones" in result.scene.fields or any(len(r.zones) > 1 for r in result.cases)
+    Parameters
+    ----------
+    scene : Scene
+    count : int
+        How many cases the table will have.
+    """
+
+    def __init__(self, scene, count: int):
+        fields = scene.fields
+        self.scene, self.count = scene, count
+        ends = "ends" in fields or "zones" in fields
+        exponents = "exponents" in fields or "zones" in fields
+        self._sif = "sif" in fields
+        self._zone_keys = [k for k, on in
+                           (("x_left", ends), ("x_right", ends), ("load", ends),
+                            ("alpha", exponents), ("beta", exponents), ("kappa", exponents),
+                            ("K_left", self._sif), ("K_right", self._sif)) if on]
+        self._rest = []
+        if "subsurface" in fields:
+            self._rest += [q if k == "value" else f"{q}_{k}"
+                           for q in ("max_shear", "max_tension") for k in SUBSURFACE_COLUMNS]
+        if "constants" in fields:
+            self._rest += list(CONSTANTS_COLUMNS)
+        if "roots" in fields:
+            self._rest += [f"root{k}_{part}" for k in range(1, 5) for part in ("real", "imag")]
+        self._rest += list(DIAGNOSTICS_COLUMNS)
+        self._inputs = None
+        self._most_zones = 1
+
+    def input_columns(self, first_inputs: dict) -> list:
+        """The inputs that vary across the scene (every input of the first case's
+        ``first_inputs`` when it has one case)."""
+        scene = self.scene
+        if not scene.sweep or self.count == 1:
+            return list(first_inputs)
+        swept = [key for _, key in scene.sweep]
+        if "velocity" in swept and "speed" not in swept:
+            swept.append("speed")
+        return swept
+
+    def row(self, res) -> list:
+        """A case's raw row (class docstring): int, float or None (an empty cell) each."""
+        e = res.entry
+        if self._inputs is None:
+            self._inputs = self.input_columns(e["inputs"])
+        self._most_zones = max(self._most_zones, len(res.zones))
+        cells = [res.index] + [e["inputs"].get(k) for k in self._inputs] + [len(res.zones)]
+        sifs = _zone_sifs(res) if self._sif else None
+        for j, z in enumerate(res.zones):
+            sif = sifs[j] if sifs is not None and j < len(sifs) else {}
+            zone = {"x_left": z["ends"][0], "x_right": z["ends"][1], "load": z["load"],
+                    "alpha": z["exponents"]["right"], "beta": z["exponents"]["left"],
+                    "kappa": z["index"], "K_left": sif.get("left"), "K_right": sif.get("right")}
+            cells += [zone[k] for k in self._zone_keys]
+        rest = dict(res.diagnostics)
+        sub = e.get("subsurface")
+        if sub is not None:
+            rest.update((q if k == "value" else f"{q}_{k}", sub[q][k])
+                        for q in ("max_shear", "max_tension") for k in SUBSURFACE_COLUMNS)
+        if "constants" in e:
+            rest.update((k, e["constants"][k]) for k in CONSTANTS_COLUMNS)
+        if "roots" in e:
+            for k in range(4):
+                rest[f"root{k + 1}_real"] = e["roots"]["real"][k]
+                rest[f"root{k + 1}_imag"] = e["roots"]["imag"][k]
+        cells += [rest.get(c) for c in self._rest]
+        return [_plain(v) for v in cells]
+
+    @property
+    def several_zones(self) -> bool:
+        """Whether the table has a column per zone (``"zones"`` asked, or several zones in
+        some case read so far)."""
+        return "zones" in self.scene.fields or self._most_zones > 1
+
+    def columns(self) -> list:
+        """The column names, once every row is in."""
+        columns = ["case"] + (self._inputs or [])
+        if self.several_zones:
+            columns.append("zones")
+            columns += [f"zone{j}_{k}" for j in range(1, self._most_zones + 1)
+                        for k in self._zone_keys]
+        else:
+            columns += [k for k in self._zone_keys if k != "load"]
+        return columns + self._rest
+
+    def lay_out(self, raw: list, blank=None) -> list:
+        """A raw row (:meth:`row`, or its cells as text) in the table's columns, ``blank`` in
+        the cells of zones the case does not have."""
+        start = 1 + len(self._inputs)
+        zones = int(raw[start])
+        width = len(self._zone_keys)
+        end = start + 1 + zones * width
+        if self.several_zones:
+            missing = [blank] * ((self._most_zones - zones) * width)
+            return raw[:end] + missing + raw[end:]
+        kept = [raw[start + 1 + k] for k, key in enumerate(self._zone_keys) if key != "load"]
+        return raw[:start] + kept + raw[end:]
 
 
 def _zone_sifs(res) -> list | None:
@@ -69,72 +162,50 @@ def _zone_sifs(res) -> list | None:
 
 
 def sweep_table(result) -> tuple:
-    """(columns, rows) of the sweep table (module docstring); a row is a list of int, float
-    or None (an empty cell), one per column."""
-    fields = result.scene.fields
-    inputs = input_columns(result)
-    columns = ["case"] + inputs
-    several = _several_zones(result)
-    want_ends = "ends" in fields or (several and "zones" in fields)
-    want_exp = "exponents" in fields or (several and "zones" in fields)
-    want_sif = "sif" in fields
-    nz = max((len(r.zones) for r in result.cases), default=1)
-    if several:
-        columns.append("zones")
-        for j in range(1, nz + 1):
-            columns += [f"zone{j}_{k}" for k, on in
-                        (("x_left", want_ends), ("x_right", want_ends), ("load", want_ends),
-                         ("alpha", want_exp), ("beta", want_exp), ("kappa", want_exp),
-                         ("K_left", want_sif), ("K_right", want_sif)) if on]
-    else:
-        columns += [k for k, on in (("x_left", want_ends), ("x_right", want_ends),
-                                    ("alpha", want_exp), ("beta", want_exp),
-                                    ("kappa", want_exp), ("K_left", want_sif),
-                                    ("K_right", want_sif)) if on]
-    if "subsurface" in fields:
-        for q in ("max_shear", "max_tension"):
-            columns += [q if k == "value" else f"{q}_{k}" for k in SUBSURFACE_COLUMNS]
-    if "constants" in fields:
-        columns += list(CONSTANTS_COLUMNS)
-    if "roots" in fields:
-        columns += [f"root{k}_{part}" for k in range(1, 5) for part in ("real", "imag")]
-    columns += list(DIAGNOSTICS_COLUMNS)
+    """(columns, rows) of the sweep table (module docstring) of a SceneResult; a row is a
+    list of int, float or None (an empty cell), one per column."""
+    table = SweepTable(result.scene, len(result.cases))
+    raw = [table.row(res) for res in result.cases]
+    return table.columns(), [table.lay_out(row) for row in raw]
 
-    rows = []
-    for res in result.cases:
-        e = res.entry
-        cells = {"case": res.index}
-        cells.update((k, e["inputs"].get(k)) for k in inputs)
-        sifs = _zone_sifs(res) if want_sif else None
-        prefixes = [f"zone{j}_" for j in range(1, len(res.zones) + 1)] if several else [""]
-        if several:
-            cells["zones"] = len(res.zones)
-        for j, (prefix, z) in enumerate(zip(prefixes, res.zones)):
-            if want_ends:
-                cells[prefix + "x_left"], cells[prefix + "x_right"] = z["ends"]
-                if several:                       # one zone carries the whole load
-                    cells[prefix + "load"] = z["load"]
-            if want_exp:
-                cells[prefix + "alpha"] = z["exponents"]["right"]
-                cells[prefix + "beta"] = z["exponents"]["left"]
-                cells[prefix + "kappa"] = z["index"]
-            if sifs is not None and j < len(sifs):
-                cells[prefix + "K_left"] = sifs[j].get("left")
-                cells[prefix + "K_right"] = sifs[j].get("right")
-        sub = e.get("subsurface")
-        if sub is not None:
-            for q in ("max_shear", "max_tension"):
-                for k in SUBSURFACE_COLUMNS:
-                    cells[q if k == "value" else f"{q}_{k}"] = sub[q][k]
-        if "constants" in e:
-            cells.update((k, e["constants"][k]) for k in CONSTANTS_COLUMNS)
-        if "roots" in e:
-            for k in range(4):
-                cells[f"root{k + 1}_real"] = e["roots"]["real"][k]
-                cells[f"root{k + 1}_imag"] = e["roots"]["imag"][k]
-        cells.update(res.diagnostics)
-        rows.append([_plain(cells.get(c)) for c in columns])
-    return columns, rows
+
+class SweepCsv:
+    """sweep.csv written one case at a time: each case's raw row (:class:`SweepTable`) goes to
+    a spool file as it comes, and :meth:`write` lays the rows out under their header.
+
+    Parameters
+    ----------
+    scene : Scene
+    count : int
+        How many cases will be added.
+    spool : Path
+        The file the raw rows go to (removed by :meth:`write`).
+    """
+
+    def __init__(self, scene, count: int, spool):
+        self.table = SweepTable(scene, count)
+        self._spool = Path(spool)
+        self._fh = open(self._spool, "w", newline="", encoding="utf-8")
+        self._rows = csv.writer(self._fh)
+
+    def add(self, res) -> None:
+        self._rows.writerow([_cell(v) for v in self.table.row(res)])
+
+    def write(self, path) -> Path:
+        """sweep.csv at ``path``: the header and one row per case added, in order."""
+        path = Path(path)
+        self._fh.close()
+        with open(self._spool, newline="", encoding="utf-8") as raw, \
+                open(path, "w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh)
+            w.writerow(self.table.columns())
+            w.writerows(self.table.lay_out(row, "") for row in csv.reader(raw))
+        self._spool.unlink()
+        return path
+
+    def close(self) -> None:
+        """Close the spool file (left for its directory's owner to remove)."""
+        self._fh.close()
 
 
 def _plain(v):
@@ -151,17 +222,6 @@ def _cell(v) -> str:
     if v is None:
         return ""
     return str(v) if isinstance(v, int) else repr(v)
-
-
-def write_sweep_csv(result, path) -> Path:
-    """sweep.csv: the sweep table (module docstring), a header and one row per case."""
-    path = Path(path)
-    columns, rows = sweep_table(result)
-    with open(path, "w", newline="", encoding="utf-8") as fh:
-        w = csv.writer(fh)
-        w.writerow(columns)
-        w.writerows([_cell(v) for v in row] for row in rows)
-    return path
 
 
 def to_dataframe(result):
