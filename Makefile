@@ -6,7 +6,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: run test bench report clean venv
+.PHONY: run test bench report docs clean venv
 
 venv: $(STAMP)
 
@@ -34,5 +34,13 @@ report: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[report]"
 	$(PY) -m validation.report
 
+# the site (theory, API reference, the executed gallery) and the validation report inside it;
+# warnings are errors
+docs: $(STAMP)
+	$(PY) -m pip install --quiet -e ".[docs]"
+	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
+	$(PY) -m validation.report --out docs/_build/html/report
+
 clean:
-	rm -rf $(VENV) build *.egg-info validation/out contact-out
+	rm -rf $(VENV) build *.egg-info validation/out contact-out docs/_build docs/auto_examples \
+		docs/api/generated docs/sg_execution_times.rst

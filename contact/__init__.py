@@ -1,7 +1,8 @@
 """contact: a rigid punch sliding with Coulomb friction over an orthotropic half-space.
 
 Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
-moving punch", Arch. Mech. 66 (2014), corrected (see the errata notes) and generalised:
+moving punch", Arch. Mech. 66 (2014), corrected (see the documentation, Theory: errata of
+Zhou et al. 2014) and generalised:
 any orthotropic material, any punch profile, both directions of sliding.  The numerical
 path goes through :func:`sie.solve`; the paper's closed forms (corrected) are available as
 ``method="closed_form"`` and serve as regression oracles.

@@ -1,9 +1,10 @@
 """Surface constants N11, N12, N21, N22 of a moving orthotropic half-space, and its Rayleigh speed.
 
-Conventions (project notes, paper-errata.md): half-space Y < 0, surface tractions
-sigma_YY(X, 0) = -p(X), tau_XY(X, 0) = -q(X), Hc[f](X) = (1/pi) PV int f(t) / (t - X) dt.
-The surface response to (p, q) is (Zhou, Lee & Jang 2014, eqs. (4.5)-(4.6), with L2 -> N22 as
-in errata item 1)::
+Conventions (see the documentation, Theory: the contact model and its conventions):
+half-space Y < 0, surface tractions sigma_YY(X, 0) = -p(X), tau_XY(X, 0) = -q(X),
+Hc[f](X) = (1/pi) PV int f(t) / (t - X) dt.  The surface response to (p, q) is (Zhou, Lee &
+Jang 2014, eqs. (4.5)-(4.6), with N22 where the paper's eq. (4.3) prints N21 in L2; see the
+documentation, Theory: errata of Zhou et al. 2014)::
 
     dv/dX (X, 0)   = N12 q(X) + N11 Hc[p](X),
     sigma_XX(X, 0) = N21 p(X) + N22 Hc[q](X).
@@ -70,6 +71,9 @@ NEAR_RAYLEIGH_FRACTION = 0.99
 class SurfaceConstants:
     """Surface constants of eqs. (4.5)-(4.6) of Zhou et al. 2014 at one relative speed.
 
+    Returned by :func:`surface_constants`; :func:`contact.solve` accepts one as
+    ``constants=`` (a sweep over friction at one speed shares it).
+
     Attributes
     ----------
     N11, N12 : float
@@ -84,6 +88,20 @@ class SurfaceConstants:
         Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11' (> 0 below c_R).
     rayleigh_speed : float
         c_R of the material.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6); the formulas in closed form
+    through P and S: see :func:`surface_constants` and the module docstring.
+
+    Examples
+    --------
+    An isotropic material at rest has a double root eta = 1 (P = 1, S = 2):
+
+    >>> import contact
+    >>> sc = contact.surface_constants(contact.Isotropic(2.5, 0.25), 0.0)
+    >>> type(sc).__name__, sc.c, sc.eta_product, sc.eta_sum
+    ('SurfaceConstants', 0.0, 1.0, 2.0)
     """
 
     N11: float
@@ -145,6 +163,32 @@ def limiting_speed(material: Orthotropic) -> float:
     speed where eta1 + eta2 = 0 (a complex pair eta^2 becomes a negative double root).
     S^2 = 2P - b/a is positive at c = 0 for every positive definite stiffness and strictly
     decreasing in c, so that speed is found by bracketing (scipy.optimize.brentq).
+
+    Parameters
+    ----------
+    material : Orthotropic
+
+    Returns
+    -------
+    float
+        The limiting relative speed c_L <= 1 (memoised per material).
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (3.1) and Table 1 (the roots against c);
+    a, b, d as in :meth:`contact.Orthotropic.characteristic_coefficients`.
+
+    Examples
+    --------
+    For the paper's material the shear wave (c = 1) comes first.  For C11 = C22 = C33 = 1,
+    C12 = 0.9: S^2 = 0.39 - 4 c^2, which vanishes at c^2 = 0.0975:
+
+    >>> import math, contact
+    >>> contact.limiting_speed(contact.zhou2014())
+    1.0
+    >>> m = contact.Orthotropic(1.0, 0.9, 1.0, 1.0)
+    >>> round(contact.limiting_speed(m) / math.sqrt(0.0975), 12)
+    1.0
     """
     c_max = min(1.0, math.sqrt(material.C11 / material.C33))
     if _eta_sum_squared(material, c_max) >= 0.0:
@@ -161,7 +205,33 @@ def rayleigh_speed(material: Orthotropic) -> float:
     a single sign change of Delta on (0, c_L)), so c_R is bracketed in (0, c_L] and found
     with scipy.optimize.brentq on Delta / sqrt(C11'), polished by bisection to about one ulp.
     Zhou et al. 2014 material: c_R = 0.9936147...; isotropic nu = 0.25: 0.9194017...
-    (errata item 5: the admissible range is 0 <= c < c_R, not [0, 1)).
+    The admissible speeds are 0 <= c < c_R (the paper, Sec. 6.1, gives [0, 1): see the
+    documentation, Theory: errata of Zhou et al. 2014).
+
+    Parameters
+    ----------
+    material : Orthotropic
+
+    Returns
+    -------
+    float
+        c_R, relative to the shear wave speed sqrt(C33 / rho) (memoised per material).
+
+    References
+    ----------
+    Lord Rayleigh, "On waves propagated along the plane surface of an elastic solid",
+    Proc. London Math. Soc. 17 (1885) 4-11 (isotropic: c_R^2 = 2 - 2/sqrt(3) at nu = 1/4).
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6) (Delta is the common
+    denominator of the surface constants).
+
+    Examples
+    --------
+    >>> import math, contact
+    >>> c_R = contact.rayleigh_speed(contact.Isotropic(1.0, 0.25))
+    >>> round(c_R, 12), round(math.sqrt(2.0 - 2.0 / math.sqrt(3.0)), 12)
+    (0.919401686762, 0.919401686762)
+    >>> round(contact.rayleigh_speed(contact.zhou2014()), 6)
+    0.993615
     """
     c_lim = limiting_speed(material)
     f = functools.partial(_scaled_rayleigh_function, material)
@@ -243,6 +313,22 @@ def surface_constants(material: Orthotropic, c) -> SurfaceConstants:
     -----
     NearRayleighWarning
         If c > 0.99 c_R.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6), rewritten through
+    P = eta1 eta2 and S = eta1 + eta2 (module docstring): the paper's form divides by
+    eta1 - eta2 and by C12 + C33 and is singular at isotropy.
+
+    Examples
+    --------
+    The isotropic static limit (plane strain, shear modulus G, Poisson's ratio nu):
+    N11 = -(1 - nu)/G, N12 = (1 - 2 nu)/(2G), N21 = -1, N22 = -2; here G = 1, nu = 1/4:
+
+    >>> import contact
+    >>> sc = contact.surface_constants(contact.Isotropic(2.5, 0.25), 0.0)
+    >>> [round(v, 12) for v in (sc.N11, sc.N12, sc.N21, sc.N22)]
+    [-0.75, 0.25, -1.0, -2.0]
     """
     c, c_R = _check_subrayleigh(material, c)
     C11, C12, C22, C33 = material.C11, material.C12, material.C22, material.C33

@@ -25,54 +25,216 @@ __all__ = [
 
 
 class ContactInputError(ValueError):
-    """Base class: an argument of a :mod:`contact` function is not admissible."""
+    """Base class: an argument of a :mod:`contact` function is not admissible.
+
+    Every input error of :mod:`contact` derives from it (and from ``ValueError``); raised as
+    such for arguments of the wrong type (a material that is not an
+    :class:`~contact.Orthotropic`, a punch that is not a :class:`~contact.Punch`), an
+    unknown ``method``, ``n`` or ``tol`` out of range, a bad region or grid of
+    :meth:`contact.ContactResult.stress_extrema`.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.solve("steel", contact.FlatPunch(1.0), load=1.0, speed=0.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.ContactInputError: material must be a contact.Orthotropic (or contact.Isotropic(...)), got str
+    """
 
 
 class MaterialError(ContactInputError):
-    """Stiffnesses not finite, or not positive definite; density not positive."""
+    """Stiffnesses not finite, or not positive definite; density not positive.
+
+    Raised by :class:`~contact.Orthotropic` and :func:`~contact.Isotropic` (C11, C22, C33 > 0,
+    C11 C22 > C12^2, rho > 0; -1 < nu < 1/2), and where a density is needed but absent.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.Isotropic(1.0, 0.5)
+    Traceback (most recent call last):
+        ...
+    contact.errors.MaterialError: Poisson's ratio nu must satisfy -1 < nu < 0.5, got 0.5
+    """
 
 
 class SpeedError(ContactInputError):
-    """Relative speed negative, not finite, or not below the Rayleigh speed c_R."""
+    """Relative speed negative, not finite, or not below the Rayleigh speed c_R.
+
+    The admissible range is 0 <= c < c_R (:func:`~contact.rayleigh_speed`): the surface
+    constants share the denominator Delta(c), which vanishes at c_R.  (Zhou, Lee & Jang 2014,
+    Sec. 6.1, print [0, 1): see the documentation, Theory: errata of Zhou et al. 2014.)
+    Raised by :func:`~contact.surface_constants`, :func:`~contact.solve` and
+    :func:`~contact.load_curve`.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.surface_constants(contact.zhou2014(), 1.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.SpeedError: relative speed c must be below the Rayleigh speed c_R = 0.99361... of this material (allowed: 0 <= c < c_R), got c = 1.0
+    """
 
 
 class LoadError(ContactInputError):
-    """Load not finite or not positive."""
+    """Load not finite or not positive.
+
+    Raised by :func:`~contact.solve` (``load``) and :func:`~contact.load_curve` (``loads``
+    also empty or not strictly increasing).
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.solve(contact.zhou2014(), contact.FlatPunch(1.0), load=-1.0, speed=0.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.LoadError: load must be positive (force per unit length pressing the punch in), got -1.0
+    """
 
 
 class FrictionError(ContactInputError):
-    """Friction coefficient negative or not finite."""
+    """Friction coefficient negative or not finite.
+
+    The sense of sliding is ``direction``, not the sign of the friction coefficient.  Raised
+    by :func:`~contact.solve` and :func:`~contact.load_curve`.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.solve(contact.zhou2014(), contact.FlatPunch(1.0), load=1.0, speed=0.0,
+    ...               friction=-0.1)
+    Traceback (most recent call last):
+        ...
+    contact.errors.FrictionError: friction must be >= 0 (...), got -0.1
+    """
 
 
 class DirectionError(ContactInputError):
-    """Direction of sliding not -1 or +1."""
+    """Direction of sliding not -1 or +1.
+
+    Raised by :func:`~contact.solve` and :func:`~contact.load_curve`.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.solve(contact.zhou2014(), contact.FlatPunch(1.0), load=1.0, speed=0.0,
+    ...               direction=0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.DirectionError: direction must be -1 (punch slides toward -X) or +1 (toward +X), got 0
+    """
 
 
 class PunchGeometryError(ContactInputError):
-    """Non-positive or non-finite punch dimension, or an inconsistent corner/break."""
+    """Non-positive or non-finite punch dimension, or an inconsistent corner/break.
+
+    Raised by the punch constructors (:class:`~contact.FlatPunch` etc.,
+    :class:`~contact.ProfilePunch`), and by :func:`~contact.solve` for an unbounded face whose
+    height does not rise on both sides (give ``face=``).
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.FlatPunch(-1.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.PunchGeometryError: half_width must be a positive finite number, got -1.0
+    """
 
 
 class ProfileCallableError(ContactInputError):
-    """A user slope callable returned the wrong shape or a non-finite value."""
+    """A user slope callable returned the wrong shape or a non-finite value.
+
+    Raised by :class:`~contact.ProfilePunch` (``slope`` / ``height`` not callable) and when
+    its slope or height is evaluated (not vectorised, complex, raising or not finite).
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.ProfilePunch(slope="X")
+    Traceback (most recent call last):
+        ...
+    contact.errors.ProfileCallableError: slope must be a vectorised callable dv/dX(X), got str
+    """
 
 
 class ContactLossError(ContactInputError):
     """The profile and load admit no single contact zone with p >= 0 (contact lost inside,
-    or two separate zones would be needed)."""
+    or two separate zones would be needed).
 
+    Raised by :func:`~contact.solve` and :func:`~contact.load_curve` when the zones cannot be
+    followed in load from first touch: no change of the zones (an end at an edge of the
+    face, a merge, a new zone, a split) gives p >= 0 and an open gap, the face carries no
+    compressive load where it first touches, or Newton's method for the ends fails.
+
+    Examples
+    --------
+    A flat face with one edge and no bound on the other side carries no load at first touch:
+
+    >>> import numpy as np, contact
+    >>> face = contact.ProfilePunch(np.zeros_like, face=(-1.0, np.inf))
+    >>> try:
+    ...     contact.solve(contact.zhou2014(), face, load=0.01, speed=0.0)
+    ... except contact.ContactLossError as e:
+    ...     print(type(e).__name__, "-", str(e)[:50])
+    ContactLossError - the face carries no compressive load at its lowest
+    """
 
 
 class StressPointError(ContactInputError):
     """A point where the stress is asked for is not finite or lies outside the half-space
-    Y <= 0."""
+    Y <= 0.
+
+    Raised by :meth:`contact.ContactResult.stress` and :func:`~contact.half_space_stress`
+    (which also needs Y < 0).
+
+    Examples
+    --------
+    >>> import contact
+    >>> r = contact.solve(contact.zhou2014(), contact.FlatPunch(1.0), load=1.0, speed=0.0)
+    >>> r.stress(0.0, 1.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.StressPointError: the half-space is Y <= 0; got Y up to 1.0 (depth below the surface is -Y)
+    """
 
 
 class UnboundedStressError(ContactInputError):
     """A stress extremum asked for in a region that holds a singular contact end (where the
-    stresses are infinite)."""
+    stresses are infinite).
+
+    Raised by :meth:`contact.ContactResult.stress_extrema` when the region reaches Y = 0 at
+    a corner end (use the zones' SIFs there, or a region with Y_max < 0).
+
+    Examples
+    --------
+    >>> import contact
+    >>> r = contact.solve(contact.zhou2014(), contact.FlatPunch(1.0), load=1.0, speed=0.0)
+    >>> r.stress_extrema(region=((-2.0, 2.0), (-1.0, 0.0)))
+    Traceback (most recent call last):
+        ...
+    contact.errors.UnboundedStressError: the stresses are infinite at the singular contact end X = -1.0 ...
+    """
+
 
 class NearRayleighWarning(UserWarning):
-    """Speed within 1% of the Rayleigh speed: results valid but extremely sensitive to c."""
+    """Speed within 1% of the Rayleigh speed: results valid but extremely sensitive to c.
+
+    Warned by :func:`~contact.surface_constants` (and so by :func:`~contact.solve`) for
+    c > 0.99 c_R: N11 has a simple pole at c_R.
+
+    Examples
+    --------
+    >>> import warnings, contact
+    >>> m = contact.zhou2014()
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     sc = contact.surface_constants(m, 0.995 * contact.rayleigh_speed(m))
+    >>> [w.category.__name__ for w in caught]
+    ['NearRayleighWarning']
+    """
 
 
 def check_finite(name: str, value, error=ContactInputError) -> float:

@@ -4,11 +4,11 @@ Stress-strain law (Zhou, Lee & Jang 2014, eq. (2.2), plane strain, C13 = C23 = 0
 
     sigma_xx = C11 u_x + C12 v_y,   sigma_yy = C12 u_x + C22 v_y,   tau_xy = C33 (u_y + v_x).
 
-Steady motion at speed V in the frame X = x -/+ V t (eq. (2.5)) turns rho u_tt into
-rho V^2 u_XX = C33 c^2 u_XX, with the relative speed c = V / sqrt(C33 / rho) (Sec. 6.1; the
-paper prints sqrt(C33 rho), see errata item 6).  Displacements exp(i k X + |k| eta Y) solve the
-equations of motion when eta is a root of the characteristic equation (eq. (3.1)), a quadratic
-in eta^2::
+Steady motion at speed V in the frame X = x -/+ V t (eq. (2.5)) turns rho u_tt into rho V^2
+u_XX = C33 c^2 u_XX, with the relative speed c = V / sqrt(C33 / rho) (Sec. 6.1; the paper
+prints sqrt(C33 rho): see the documentation, Theory: errata of Zhou et al. 2014).
+Displacements exp(i k X + |k| eta Y) solve the equations of motion when eta is a root of the
+characteristic equation (eq. (3.1)), a quadratic in eta^2::
 
     a eta^4 + b eta^2 + d = 0,
     a = C22 C33,
@@ -57,11 +57,47 @@ class Orthotropic:
         Mass density (> 0), needed only to convert a speed V to the relative speed
         c = V / sqrt(C33 / rho).
 
+    Attributes
+    ----------
+    C11, C12, C22, C33 : float
+        As given.
+    rho : float or None
+        As given.
+
     Raises
     ------
     MaterialError
         If a stiffness is not finite, not positive where required, the stiffness is not
         positive definite, or rho is given and is not a finite positive number.
+
+    Notes
+    -----
+    sigma_xx = C11 u_x + C12 v_y, sigma_yy = C12 u_x + C22 v_y, tau_xy = C33 (u_y + v_x);
+    the methods give the characteristic equation of the moving half-space
+    (:meth:`characteristic_coefficients`, :meth:`characteristic_roots`), its decaying roots
+    and modes, and speeds (:attr:`shear_wave_speed`, :meth:`relative_speed`).
+
+    References
+    ----------
+    Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
+    moving punch", Arch. Mech. 66 (2014), eqs. (2.2) (stress-strain law) and (3.1)
+    (characteristic equation).
+
+    Examples
+    --------
+    C11 = C22 = 3, C12 = C33 = 1 is isotropic (lambda = G = 1); at rest its characteristic
+    equation 3 eta^4 - 6 eta^2 + 3 = 0 has the double root eta^2 = 1:
+
+    >>> import contact
+    >>> m = contact.Orthotropic(C11=3.0, C12=1.0, C22=3.0, C33=1.0)
+    >>> m.characteristic_coefficients(0.0)
+    (3.0, -6.0, 3.0)
+    >>> [round(e.real, 12) for e in m.decaying_roots(0.0)]
+    [1.0, 1.0]
+    >>> contact.Orthotropic(1.0, 2.0, 1.0, 1.0)
+    Traceback (most recent call last):
+        ...
+    contact.errors.MaterialError: stiffness must be positive definite: need C11*C22 > C12**2, ...
     """
 
     C11: float
@@ -85,13 +121,15 @@ class Orthotropic:
 
     @property
     def shear_wave_speed(self) -> float:
-        """Bulk shear wave speed sqrt(C33/rho) (Sec. 6.1, errata item 6); needs ``rho``."""
+        """Bulk shear wave speed sqrt(C33/rho) (Zhou et al. 2014, Sec. 6.1, which prints
+        sqrt(C33 rho); see the documentation, Theory: errata of Zhou et al. 2014); needs
+        ``rho``."""
         if self.rho is None:
             raise MaterialError("rho is None: give the density to convert speeds")
         return math.sqrt(self.C33 / self.rho)
 
     def relative_speed(self, V) -> float:
-        """Relative speed c = |V| / sqrt(C33/rho) of a punch moving at speed ``V``."""
+        """Relative speed c = abs(V) / sqrt(C33/rho) of a punch moving at speed ``V``."""
         V = check_finite("speed V", V, SpeedError)
         return abs(V) / self.shear_wave_speed
 
@@ -128,7 +166,7 @@ class Orthotropic:
         Returns
         -------
         numpy.ndarray of complex, shape (4,)
-            (eta1, -eta1, eta3, -eta3) as in Table 1: |eta1| >= |eta3|; eta1 and eta3 are the
+            (eta1, -eta1, eta3, -eta3) as in Table 1: abs(eta1) >= abs(eta3); eta1 and eta3 are the
             principal square roots of the two roots eta^2 of a eta^4 + b eta^2 + d = 0
             (real part > 0, or on the positive imaginary axis when eta^2 < 0).  For a
             complex-conjugate pair eta^2 = r exp(+-i phi), eta1 has Im > 0 and eta3 = conj(eta1).
@@ -149,7 +187,7 @@ class Orthotropic:
 
     def decaying_roots(self, c) -> tuple[complex, complex]:
         """(eta_1, eta_2) = (eta1, eta3) of :meth:`characteristic_roots`: the two roots with
-        Re eta > 0, whose modes exp(i k X + |k| eta Y) decay into the half-space Y < 0
+        Re eta > 0, whose modes exp(i k X + abs(k) eta Y) decay into the half-space Y < 0
         (below the limiting speed).  Near a double root they are ill-conditioned (see
         :meth:`characteristic_roots`); their sum and product are not
         (:func:`contact.constants.root_symmetric_functions`)."""
@@ -217,7 +255,25 @@ def Isotropic(E, nu, rho=None) -> Orthotropic:
     -------
     Orthotropic
         C11 = C22 = lambda + 2G, C12 = lambda, C33 = G with G = E / (2 (1 + nu)) and
-        lambda = E nu / ((1 + nu)(1 - 2 nu)).
+        lambda = E nu / ((1 + nu)(1 - 2 nu)) (the Lame constants).
+
+    Raises
+    ------
+    MaterialError
+        E not finite or not positive, nu not in (-1, 1/2), rho not positive.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (2.2) with C11 = C22, C12 = lambda, C33 = G.
+
+    Examples
+    --------
+    E = 5/2, nu = 1/4 gives lambda = G = 1:
+
+    >>> import contact
+    >>> m = contact.Isotropic(2.5, 0.25)
+    >>> m.C11, m.C12, m.C22, m.C33
+    (3.0, 1.0, 3.0, 1.0)
     """
     E = _check_positive("Young's modulus E", E)
     nu = check_finite("Poisson's ratio nu", nu, MaterialError)
@@ -232,5 +288,27 @@ def zhou2014() -> Orthotropic:
     """The orthotropic material of Zhou et al. 2014, Sec. 6 (stiffnesses in GPa).
 
     C11 = 159.7885, C12 = 5.2609, C22 = 15.4732, C33 = G0 = 5.52.
+
+    Returns
+    -------
+    Orthotropic
+        Without a density (``rho=None``).
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 6 and Table 1 (the characteristic roots
+    of this material against the relative speed c).
+
+    Examples
+    --------
+    The characteristic roots at c = 0 and c = 0.5, as printed in Table 1 of the paper
+    (5.2506, 0.6120 and 5.2271, 0.5301):
+
+    >>> import contact
+    >>> m = contact.zhou2014()
+    >>> [round(e.real, 4) for e in m.decaying_roots(0.0)]
+    [5.2506, 0.612]
+    >>> [round(e.real, 4) for e in m.decaying_roots(0.5)]
+    [5.2271, 0.5301]
     """
     return Orthotropic(C11=159.7885, C12=5.2609, C22=15.4732, C33=5.52)

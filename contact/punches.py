@@ -67,8 +67,47 @@ def _checked(fn, X, what):
 
 
 class Punch:
-    """Base class.  Subclasses set ``corners`` (left, right: X of a sharp corner or None),
-    ``breaks`` (tuple of X) and implement :meth:`_slope`."""
+    """Base class of the rigid punches: what the contact solver needs of a face.
+
+    Subclasses set ``corners`` (left, right: X of a sharp corner or None), ``breaks`` (tuple
+    of X) and implement :meth:`_slope` (and :meth:`_height` where the height is known).
+    :func:`contact.solve` accepts any instance; use :class:`ProfilePunch` for a face of
+    your own rather than subclassing.
+
+    Attributes
+    ----------
+    corners : (float or None, float or None)
+        X of the sharp corner that ends the face on the left / right, or None.
+    breaks : tuple of float
+        X where the slope or one of its derivatives jumps.
+    extent : (float, float)
+        (X_min, X_max) of the face (-inf / +inf where it has no corner).
+    ends : (str, str)
+        "singular" (a corner: p unbounded there) or "bounded" at each end of a contact
+        that reaches the corners.
+    kappa : int
+        The index of the equation for that contact: 1, 0 or -1.
+    kind : str
+        The registry name ("flat", "triangular", "parabolic", "cylindrical", "profile").
+    has_height : bool
+        Whether :meth:`height` is known.
+    homogeneous, slope_degree, convex
+        Properties of the slope that let the solver take short cuts (module docstring).
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (2.6) (the four profiles) and eq. (4.10)
+    (the slope is the right-hand side of the contact equation).
+
+    Examples
+    --------
+    >>> import contact
+    >>> p = contact.FlatPunch(1.0)
+    >>> isinstance(p, contact.Punch), p.ends, p.kappa, p.extent
+    (True, ('singular', 'singular'), 1, (-1.0, 1.0))
+    >>> float(contact.CylindricalPunch(2.0).slope(1.0))           # X / R
+    0.5
+    """
 
     corners: tuple = (None, None)
     breaks: tuple = ()
@@ -135,7 +174,42 @@ class Punch:
 
 class FlatPunch(Punch):
     """Flat-ended punch of half-width a: contact [-a, a], sharp corners at both ends
-    (index 1; Zhou et al. 2014, Sec. 5.1)."""
+    (index 1; Zhou et al. 2014, Sec. 5.1).
+
+    Parameters
+    ----------
+    half_width : float
+        a > 0.
+
+    Attributes
+    ----------
+    half_width : float
+    corners : (float, float)
+        (-a, a).
+
+    Raises
+    ------
+    PunchGeometryError
+        a not finite or not positive.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 5.1, eqs. (5.1)-(5.13).  Without friction
+    the classical rigid flat punch: p = P / (pi sqrt(a^2 - X^2)) (Sadowsky 1928; Johnson,
+    Contact Mechanics (1985), ch. 2), SIFs P / (pi sqrt(a)) (eq. (5.13)).
+
+    Examples
+    --------
+    >>> import math, contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.FlatPunch(1.0), load=1.0,
+    ...                   speed=0.0)
+    >>> r.ends, r.zones[0].kinds
+    ((-1.0, 1.0), ('corner', 'corner'))
+    >>> round(float(r.pressure(0.6)) * math.pi * 0.8, 12)     # p = P / (pi sqrt(a^2 - X^2))
+    1.0
+    >>> round(r.sif["right"] * math.pi, 12)                   # K = P / (pi sqrt(a))
+    1.0
+    """
     kind = "flat"
     convex = True
     slope_degree = 0
@@ -162,7 +236,39 @@ class FlatPunch(Punch):
 
 class TriangularPunch(Punch):
     """Wedge face v = -v0 + m0 X, sharp corner at X = 0, contact [0, b] (index 0;
-    Zhou et al. 2014, Sec. 5.2).  ``slope`` is m0 > 0."""
+    Zhou et al. 2014, Sec. 5.2).  ``slope`` is m0 > 0.
+
+    Parameters
+    ----------
+    slope : float
+        m0 > 0.
+
+    Attributes
+    ----------
+    m0 : float
+    corners : (0.0, None)
+
+    Raises
+    ------
+    PunchGeometryError
+        m0 not finite or not positive.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 5.2, eqs. (5.14)-(5.23); the contact
+    length b = -N11 P / (m0 pi alpha), eq. (5.22).
+
+    Examples
+    --------
+    Without friction alpha = 1/2, so b = -2 N11 P / (pi m0):
+
+    >>> import math, contact
+    >>> m = contact.Isotropic(1.0, 0.3)
+    >>> r = contact.solve(m, contact.TriangularPunch(0.1), load=0.01, speed=0.0)
+    >>> N11 = contact.surface_constants(m, 0.0).N11
+    >>> r.ends[0], round(r.ends[1] / (-2 * N11 * 0.01 / (math.pi * 0.1)), 12)
+    (0.0, 1.0)
+    """
     kind = "triangular"
     convex = True
     slope_degree = 0
@@ -216,14 +322,78 @@ class _ParabolicFace(Punch):
 
 class ParabolicPunch(_ParabolicFace):
     """Face v = -v0 + X^2/(2R) on [0, b], sharp corner at X = 0 (index 0;
-    Zhou et al. 2014, Sec. 5.3)."""
+    Zhou et al. 2014, Sec. 5.3).
+
+    Parameters
+    ----------
+    radius : float
+        R > 0.
+
+    Attributes
+    ----------
+    radius : float
+    corners : (0.0, None)
+
+    Raises
+    ------
+    PunchGeometryError
+        R not finite or not positive.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 5.3, eqs. (5.24)-(5.34); the contact
+    length b^2 = -2 N11 P R / (pi alpha (1 + alpha)), eq. (5.32).
+
+    Examples
+    --------
+    Without friction alpha = 1/2, so b^2 = -8 N11 P R / (3 pi):
+
+    >>> import math, contact
+    >>> m = contact.Isotropic(1.0, 0.3)
+    >>> r = contact.solve(m, contact.ParabolicPunch(1.0), load=0.01, speed=0.0)
+    >>> N11 = contact.surface_constants(m, 0.0).N11
+    >>> r.ends[0], round(r.ends[1] / math.sqrt(-8 * N11 * 0.01 / (3 * math.pi)), 12)
+    (0.0, 1.0)
+    """
     kind = "parabolic"
     corners = (0.0, None)
 
 
 class CylindricalPunch(_ParabolicFace):
     """Face v = -v0 + X^2/(2R) (a + b << R), both contact ends free (index -1;
-    Zhou et al. 2014, Sec. 5.4)."""
+    Zhou et al. 2014, Sec. 5.4).
+
+    Parameters
+    ----------
+    radius : float
+        R > 0.
+
+    Attributes
+    ----------
+    radius : float
+    corners : (None, None)
+
+    Raises
+    ------
+    PunchGeometryError
+        R not finite or not positive.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 5.4, eqs. (5.35)-(5.47).  Without friction
+    the Hertz line contact: half-width a^2 = -2 N11 P R / pi = 4 P R / (pi E*),
+    E* = E / (1 - nu^2) (Johnson, Contact Mechanics (1985), ch. 4).
+
+    Examples
+    --------
+    >>> import math, contact
+    >>> E, nu, P, R = 1.0, 0.3, 0.01, 1.0
+    >>> r = contact.solve(contact.Isotropic(E, nu), contact.CylindricalPunch(R), load=P,
+    ...                   speed=0.0)
+    >>> a = math.sqrt(4 * P * R / (math.pi * E / (1 - nu**2)))       # Hertz
+    >>> round(r.ends[0] / a, 12), round(r.ends[1] / a, 12)
+    (-1.0, 1.0)
+    """
     kind = "cylindrical"
     corners = (None, None)
 
@@ -256,6 +426,17 @@ class ProfilePunch(Punch):
         Without it (and without corners) the face is unbounded, and its height must rise
         without bound on both sides (else :class:`PunchGeometryError` asks for ``face``).
 
+    Attributes
+    ----------
+    extent : (float, float)
+        (X_min, X_max) of the face.
+    corners : (float or None, float or None)
+        The finite edges of the face (sharp corners), None on an unbounded side.
+    breaks : tuple of float
+        The breaks inside the face, ascending.
+    samples : object
+        Only for :meth:`from_samples`: the spline through the samples.
+
     Raises
     ------
     ProfileCallableError
@@ -265,12 +446,30 @@ class ProfilePunch(Punch):
         Neither ``slope`` nor ``height``; ``face`` not an increasing pair; a corner outside
         the face ("the face is narrower than the corner") or inside it; breaks not finite.
 
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (4.10) (the slope is the right-hand side
+    of the contact equation); contact of several zones: see the documentation, Theory: the
+    contact model and its conventions.
+
     Examples
     --------
+    A W-shaped face touches first at its two lowest points, X = -1 and 1:
+
     >>> import numpy as np, contact
     >>> w = contact.ProfilePunch(lambda X: 0.2 * X**3 - 0.2 * X, face=(-2.0, 2.0))
-    >>> w.extent
-    (-2.0, 2.0)
+    >>> w.extent, w.corners
+    ((-2.0, 2.0), (-2.0, 2.0))
+    >>> r = contact.solve(contact.zhou2014(), w, load=1e-3, speed=0.0)
+    >>> [tuple(round(x, 2) for x in z.ends) for z in r.zones]
+    [(-1.01, -0.99), (0.99, 1.01)]
+
+    A face given by its height alone (the slope by finite differences):
+
+    >>> cyl = contact.ProfilePunch(height=lambda X: X**2 / 2.0)          # R = 1
+    >>> a = contact.solve(contact.Isotropic(1.0, 0.3), cyl, load=0.01, speed=0.0).half_width
+    >>> round(a / (4 * 0.01 / (np.pi / (1 - 0.3**2)))**0.5, 8)          # Hertz
+    1.0
     """
     kind = "profile"
 

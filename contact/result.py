@@ -1,7 +1,8 @@
 """The result of a contact solve (:func:`contact.solve`): fields, SIFs, residual.
 
 Zhou, Lee & Jang 2014, eqs. (4.5)-(4.6), (5.11)-(5.13), (5.23), (5.33); conventions of the
-project's errata notes (p > 0 compressive, q = mu_f p, Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt).
+documentation, Theory: the contact model and its conventions (p > 0 compressive, q = mu_f p,
+Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt).
 """
 from __future__ import annotations
 
@@ -37,6 +38,25 @@ class ContactZone:
     sif : dict
         Stress intensity factors at its corner ends, keyed "left" / "right" (definitions:
         :class:`ContactResult`); empty for two free ends.  Computed on first access.
+    width : float
+        x_right - x_left.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (5.11)-(5.13), (5.23), (5.33) (the SIFs).
+
+    Examples
+    --------
+    A flat punch without friction: K = P / (pi sqrt(a)) at both corners (eq. (5.13)):
+
+    >>> import math, contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.FlatPunch(2.0), load=1.0,
+    ...                   speed=0.0)
+    >>> z = r.zones[0]
+    >>> z.kinds, z.width, z.kappa, round(z.load, 12)
+    (('corner', 'corner'), 4.0, 1, 1.0)
+    >>> round(z.sif["left"] * math.pi * math.sqrt(2.0), 12)
+    1.0
     """
     ends: tuple
     kinds: tuple
@@ -69,6 +89,10 @@ class ContactZone:
 class ContactResult:
     """Solution of one contact problem.
 
+    Returned by :func:`contact.solve` (and, one per load, by :func:`contact.load_curve`).
+    Methods: :meth:`pressure`, :meth:`shear`, :meth:`hilbert_pressure`, :meth:`sigma_xx` (on
+    the surface), :meth:`stress` and :meth:`stress_extrema` (under it).
+
     Attributes
     ----------
     zones : tuple of ContactZone
@@ -84,10 +108,10 @@ class ContactResult:
     n : int
         Jacobi coefficients used per zone.
     residual : float
-        max |(dominant operator applied to p) - v'| at 64 check points per zone, relative to
-        max |v'| (or to the operator's size when v' = 0).
+        max abs((dominant operator applied to p) - v') at 64 check points per zone, relative
+        to max abs(v') (or to the operator's size when v' = 0).
     load_check : float
-        |int p dX - P| / P.
+        abs(int p dX - P) / P.
     sif : dict
         Stress intensity factors at singular (corner) ends, keyed "left"/"right" (one zone).
         Two corners (flat type, Zhou et al. 2014 eqs. (5.11)-(5.12)):
@@ -98,6 +122,45 @@ class ContactResult:
         The material it was solved for (with ``constants``, what :meth:`stress` needs).
     mu_f : float
         Signed friction coefficient -direction * friction.
+    load, speed, friction, direction, punch
+        The arguments of :func:`contact.solve`.
+    method : {"numeric", "closed_form"}
+    solution : sie.Solution or closed-form solution
+        The solution of the integral equation (numeric path: ``p(X) = solution(X)``).
+    half_width, center : float
+        Of the one zone.
+    zone_scale : float
+        The largest half-width of the zones.
+    singular_ends : tuple of (float, float)
+        (X, exponent) of every end where p is unbounded.
+
+    Raises
+    ------
+    ContactInputError
+        ``ends``, ``sif``, ``half_width`` and ``center`` of a contact with several zones;
+        fields asked for at non-finite points or at a singular end.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.5)-(4.6) (surface fields), (4.14)-(4.18)
+    (exponents, with the arccot branch corrected: see the documentation, Theory: errata of
+    Zhou et al. 2014), (5.11)-(5.13), (5.23), (5.33) (SIFs).
+
+    Examples
+    --------
+    A flat punch sliding with friction 0.3: the exponents solve
+    cot(pi alpha) = -mu_f N12 / N11, with alpha + beta = -1 (index 1):
+
+    >>> import math, contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.FlatPunch(1.0), load=1.0,
+    ...                   speed=0.0, friction=0.3)
+    >>> type(r).__name__, r.ends, r.kappa, round(r.alpha + r.beta, 12)
+    ('ContactResult', (-1.0, 1.0), 1, -1.0)
+    >>> N = r.constants
+    >>> abs(1.0 / math.tan(math.pi * r.alpha) + r.mu_f * N.N12 / N.N11) < 1e-12
+    True
+    >>> r.load_check < 1e-12, r.residual < 1e-12
+    (True, True)
     """
     zones: tuple
     n: int
@@ -144,8 +207,8 @@ class ContactResult:
 
     @property
     def residual(self) -> float:
-        """max |N12 mu_f p + N11 Hc[p] - v'| at 64 Chebyshev points of each zone, relative
-        to max |v'| (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
+        """max abs(N12 mu_f p + N11 Hc[p] - v') at 64 Chebyshev points of each zone, relative
+        to max abs(v') (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
         if self._residual is None:
             self._residual = _residual_of(self)
         return self._residual
@@ -202,7 +265,8 @@ class ContactResult:
         return self.solution(X)
 
     def shear(self, X):
-        """Friction traction q(X) = mu_f p(X) (tau_XY(X, 0) = -q; errata conventions)."""
+        """Friction traction q(X) = mu_f p(X) (tau_XY(X, 0) = -q; the conventions of the
+        documentation, Theory: the contact model and its conventions)."""
         return self.mu_f * self.pressure(X)
 
     def hilbert_pressure(self, X):
@@ -217,7 +281,8 @@ class ContactResult:
 
     def sigma_xx(self, X):
         """Surface in-plane stress sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p] at any real X
-        (errata item 1: N22 multiplies the shear term).  At mu_f = 0 only N21 p."""
+        (N22 multiplies the shear term, where the paper's eq. (4.3) prints N21: see the
+        documentation, Theory: errata of Zhou et al. 2014).  At mu_f = 0 only N21 p."""
         p = self.pressure(X)
         if self.mu_f == 0.0:
             return self.constants.N21 * p
@@ -405,6 +470,8 @@ def _sif(phi_end, ends, kinds, alpha, beta):
 class LoadCurve:
     """The contact at each load of a load curve (:func:`contact.load_curve`).
 
+    ``len(curve)``, ``curve[i]`` and iteration go over ``results``.
+
     Attributes
     ----------
     loads : ndarray
@@ -415,8 +482,28 @@ class LoadCurve:
         Where the zones changed between first touch and the last load, in load order
         (:class:`contact.continuation.Event`: load, kind "new zone" / "merge" / "edge" /
         "split", zone index).
+    zone_count : ndarray of int
+        Number of contact zones at each load.
+    contact_length : ndarray
+        The summed width of the zones at each load.
+    span : ndarray, shape (m, 2)
+        (x_left of the first zone, x_right of the last) at each load.
 
-    ``len(curve)``, ``curve[i]`` and iteration go over ``results``.
+    References
+    ----------
+    As for :func:`contact.solve`.
+
+    Examples
+    --------
+    A cylinder without friction: the Hertz half-width grows like sqrt(P):
+
+    >>> import contact
+    >>> curve = contact.load_curve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                            [0.01, 0.04], speed=0.0)
+    >>> len(curve), curve.zone_count.tolist(), curve.events
+    (2, [1, 1], ())
+    >>> round(float(curve.contact_length[1] / curve.contact_length[0]), 12)
+    2.0
     """
     loads: np.ndarray
     results: tuple

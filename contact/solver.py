@@ -1,8 +1,8 @@
 """The moving frictional punch, solved numerically through :func:`sie.solve`.
 
-Zhou, Lee & Jang 2014, eqs. (4.5)-(4.10), with the conventions of the project's errata notes:
-on the contact [x_l, x_r], with X = h s + m (h = (x_r - x_l)/2, m = (x_r + x_l)/2),
-p(X) = psi(s) solves
+Zhou, Lee & Jang 2014, eqs. (4.5)-(4.10), with the conventions of the documentation (Theory:
+the contact model and its conventions): on the contact [x_l, x_r], with X = h s + m
+(h = (x_r - x_l)/2, m = (x_r + x_l)/2), p(X) = psi(s) solves
 
     N12 mu_f psi(s) + (N11/pi) PV int psi(t)/(t - s) dt = v'(h s + m),     |s| < 1,
     h int psi ds = P,
@@ -123,6 +123,26 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         (or a subclass: LoadError, FrictionError, SpeedError, ...) for inputs outside what is
         allowed; ContactLossError when no change of the zones gives a valid contact.
 
+    Warns
+    -----
+    NearRayleighWarning
+        speed > 0.99 c_R.
+    RuntimeWarning
+        The adaptive n reached its cap before two successive n agreed to ``tol``.
+
+    Notes
+    -----
+    On each zone the pressure solves N12 mu_f p + (N11/pi) PV int p(t)/(t - X) dt = v'(X)
+    (module docstring), by :func:`sie.solve` on the union of the zones; free ends are found
+    from the loads, the solvability condition of index -1 zones and the common rigid face.
+
+    References
+    ----------
+    Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
+    moving punch", Arch. Mech. 66 (2014), eqs. (4.5)-(4.10) (the equation), (5.40) (the
+    solvability condition), Sec. 5 (the four punches); see the documentation, Theory: the
+    contact model and its conventions.
+
     Examples
     --------
     >>> import contact
@@ -130,6 +150,14 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     ...                   load=0.01, speed=0.6, friction=0.3)
     >>> len(r.zones), r.zones[0].kinds
     (1, ('free', 'free'))
+
+    Without friction the cylinder gives the Hertz pressure p(0) = 2P / (pi a):
+
+    >>> import math
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                   load=0.01, speed=0.0)
+    >>> round(float(r.pressure(0.0)) / (2 * 0.01 / (math.pi * r.half_width)), 12)
+    1.0
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
@@ -167,14 +195,24 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
     ------
     LoadError
         ``loads`` empty, not finite, not positive or not strictly increasing.
+    ContactInputError
+        Other inputs, as for :func:`solve`; ContactLossError as there.
+
+    References
+    ----------
+    As for :func:`solve`.
 
     Examples
     --------
+    The W-shaped face touches in two zones, which merge at a load of about 0.17:
+
     >>> import numpy as np, contact
     >>> w = contact.ProfilePunch(lambda X: 0.2 * X**3 - 0.2 * X, face=(-2.0, 2.0))
-    >>> curve = contact.load_curve(contact.zhou2014(), w, [1e-3, 1e-2, 1.0], speed=0.0)
+    >>> curve = contact.load_curve(contact.Isotropic(1.0, 0.3), w, [1e-3, 1.0], speed=0.0)
     >>> curve.zone_count.tolist()
-    [2, 2, 1]
+    [2, 1]
+    >>> [(e.kind, round(e.load, 2)) for e in curve.events]
+    [('merge', 0.17)]
     """
     _, friction, direction, tol = _check_inputs(material, punch, 1.0, speed, friction,
                                                 direction, "numeric", n, tol)
@@ -336,6 +374,40 @@ def _refine(face, eq, state, tol, punch, n_start):
 
 
 def contact_length(material, punch, *, load, speed, friction=0.0, direction=-1):
-    """x_right - x_left of the contact (numeric path)."""
+    """x_right - x_left of the contact (numeric path).
+
+    ``solve(material, punch, load=..., speed=..., friction=..., direction=...)`` and the
+    width of its one zone.
+
+    Parameters
+    ----------
+    material, punch, load, speed, friction, direction
+        As for :func:`solve`.
+
+    Returns
+    -------
+    float
+        The contact length.
+
+    Raises
+    ------
+    ContactInputError
+        As for :func:`solve`; also when the contact has several zones (use ``solve`` and
+        ``result.zones``).
+
+    References
+    ----------
+    As for :func:`solve`.
+
+    Examples
+    --------
+    The Hertz contact of a cylinder: 2a with a^2 = 4 P R / (pi E*), E* = E / (1 - nu^2):
+
+    >>> import math, contact
+    >>> L = contact.contact_length(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                            load=0.01, speed=0.0)
+    >>> round(L / (2 * math.sqrt(4 * 0.01 / (math.pi / (1 - 0.3**2)))), 12)
+    1.0
+    """
     r = solve(material, punch, load=load, speed=speed, friction=friction, direction=direction)
     return r.ends[1] - r.ends[0]

@@ -88,12 +88,45 @@ _NEAR = 1e-3
 class StressField:
     """Plane stresses at points (X, Y) of the half-space (tension positive).
 
+    Returned by :meth:`contact.ContactResult.stress` and :func:`half_space_stress`.
+
     Attributes
     ----------
     X, Y : ndarray
         The points (Y <= 0), broadcast to one shape.
     sigma_xx, sigma_yy, sigma_xy : ndarray
         The in-plane stress components at the points.
+    mean : ndarray
+        (sigma_xx + sigma_yy) / 2.
+    max_shear : ndarray
+        In-plane maximum shear stress, the radius of Mohr's circle.
+    principal : (ndarray, ndarray)
+        sigma_1 >= sigma_2.
+    max_tension : ndarray
+        sigma_1.
+    principal_angle : ndarray
+        Angle (radians, from +X) of the direction of sigma_1.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (2.2)-(3.1) (the field is derived in the
+    module docstring); McEwen (1949), Johnson, Contact Mechanics (1985), Sec. 7.1 (the
+    isotropic Hertz field).
+
+    Examples
+    --------
+    Under a Hertz contact, on the axis at depth a: sigma_yy = -p0 / sqrt(2) and
+    sigma_xx = -p0 (3 / sqrt(2) - 2) (McEwen 1949):
+
+    >>> import math, contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                   load=0.01, speed=0.0)
+    >>> a, p0 = r.half_width, float(r.pressure(0.0))
+    >>> f = r.stress(0.0, -a)
+    >>> type(f).__name__, round(float(f.sigma_yy) / p0 * math.sqrt(2.0), 9)
+    ('StressField', -1.0)
+    >>> round(float(f.sigma_xx) / p0, 9) == round(2.0 - 3.0 / math.sqrt(2.0), 9)
+    True
     """
     X: np.ndarray
     Y: np.ndarray
@@ -340,16 +373,24 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
         Points not finite, or Y >= 0 (the surface itself is the traction: see
         :meth:`contact.ContactResult.stress`).
 
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (2.4)-(3.1) (equations of motion and
+    characteristic roots; the stresses are derived in the module docstring).  Flamant's
+    line load: Johnson, Contact Mechanics (1985), eqs. (2.15)-(2.19).
+
     Examples
     --------
-    A Flamant line load P at the origin, C_p(z) = -P / (pi z), isotropic and static:
+    A Flamant line load P = 1 at the origin, C_p(z) = -P / (pi z), isotropic and static: on
+    the axis sigma_yy = -2P / (pi depth), sigma_xx = sigma_xy = 0:
 
     >>> import numpy as np, contact
-    >>> from contact.subsurface import half_space_stress
-    >>> f = half_space_stress(contact.Isotropic(1.0, 0.3), 0.0, 0.0, -2.0,
-    ...                       lambda z: -1.0 / (np.pi * z))
-    >>> float(f.sigma_yy * np.pi)     # -(2P/pi) / depth
+    >>> f = contact.half_space_stress(contact.Isotropic(1.0, 0.3), 0.0, 0.0, -2.0,
+    ...                               lambda z: -1.0 / (np.pi * z))
+    >>> round(float(f.sigma_yy * np.pi), 9)     # -(2P/pi) / depth
     -1.0
+    >>> bool(abs(f.sigma_xx) < 1e-12 and abs(f.sigma_xy) < 1e-12)
+    True
     """
     X, Y = stress_points(X, Y)
     if np.any(Y == 0):
@@ -368,6 +409,8 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
 class Extremum:
     """Where a stress quantity is largest in a region.
 
+    One entry of :class:`StressExtrema`.
+
     Attributes
     ----------
     quantity : str
@@ -382,6 +425,21 @@ class Extremum:
         The half-width a of the contact zone nearest to X.
     depth_over_a : float
         depth / half_width.
+
+    References
+    ----------
+    Johnson, Contact Mechanics (1985), ch. 4 (Hertz line contact: the largest shear,
+    0.300 p0, lies on the axis at depth 0.786 a).
+
+    Examples
+    --------
+    >>> import contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                   load=0.01, speed=0.0)
+    >>> e = r.stress_extrema(grid=(21, 21)).max_shear
+    >>> p0 = float(r.pressure(0.0))
+    >>> e.quantity, round(e.value / p0, 3), round(e.depth_over_a, 3), abs(e.X) < 1e-6
+    ('max_shear', 0.3, 0.786, True)
     """
     quantity: str
     value: float
@@ -396,10 +454,34 @@ class Extremum:
 class StressExtrema:
     """The largest in-plane maximum shear and the largest tension in a region.
 
+    Returned by :meth:`contact.ContactResult.stress_extrema`.
+
     Attributes
     ----------
     max_shear, max_tension : Extremum
+        The largest in-plane maximum shear and the largest principal stress sigma_1.
     region : ((X_min, X_max), (Y_min, Y_max))
+        The region searched.
+
+    References
+    ----------
+    Johnson, Contact Mechanics (1985), ch. 4 (the Hertz line contact) and Sec. 7.1 (with
+    friction).
+
+    Examples
+    --------
+    The Hertz contact: the shear peaks at 0.300 p0 at depth 0.786 a under the centre; the
+    material is nowhere in tension without friction:
+
+    >>> import contact
+    >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.CylindricalPunch(1.0),
+    ...                   load=0.01, speed=0.0)
+    >>> ex = r.stress_extrema(grid=(21, 21))
+    >>> p0 = float(r.pressure(0.0))
+    >>> round(ex.max_shear.value / p0, 3), round(ex.max_shear.depth_over_a, 3)
+    (0.3, 0.786)
+    >>> ex.max_tension.value < 1e-9 * p0
+    True
     """
     max_shear: Extremum
     max_tension: Extremum

@@ -1,8 +1,9 @@
 """Contact on several zones: one integral equation on their union, its side conditions, and
 Newton's method for the ends.
 
-On L = [c_1, d_1] U ... U [c_J, d_J] the pressure solves (Zhou et al. 2014, eqs. (4.5)-(4.10),
-errata conventions: v the Y-displacement, q = mu_f p)
+On L = [c_1, d_1] U ... U [c_J, d_J] the pressure solves (Zhou et al. 2014, eqs. (4.5)-(4.10);
+conventions of the documentation, Theory: the contact model and its conventions: v the
+Y-displacement, q = mu_f p)
 
     N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt = H'(X),    X in L,
 

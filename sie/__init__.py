@@ -6,6 +6,18 @@
 Public API: :func:`gauss_jacobi`, :func:`solve`, :class:`Solution`, the
 exponent rule :func:`sie_exponents`, Jacobi helpers, and the exceptions
 (all ``ValueError`` subclasses).  This package knows no mechanics.
+
+``N_MAX`` (defined in :mod:`sie.solver`) is the largest number of Jacobi coefficients per
+interval that :func:`solve` accepts: the projection is dense, O(n^2) work and memory per
+interval.
+
+>>> import sie
+>>> sie.N_MAX
+20000
+
+References: Erdogan, Gupta & Cook (1973); Krenk, Quart. Appl. Math. 33 (1975) 225;
+Muskhelishvili, Singular Integral Equations (1953); Hale & Townsend, SIAM J. Sci. Comput. 35
+(2013) A652 (the quadrature); see the documentation, Theory: the singular integral equation.
 """
 from .cauchy import jacobi_cauchy
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
@@ -17,8 +29,17 @@ from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_series
 from .exponents import Exponents, sie_exponents
 from .solution import IntervalSolution, Solution
-from .solver import N_MAX, Functionals, FunctionalsRule, dominant_functionals, solve
+from .solver import N_MAX as _N_MAX
+from .solver import Functionals, FunctionalsRule, dominant_functionals, solve
 from .special import jacobi_moment
+
+#: Largest number of Jacobi coefficients per interval that :func:`solve`,
+#: :func:`dominant_functionals` and :class:`FunctionalsRule` accept (``sie.solver.N_MAX``;
+#: a larger ``n`` raises :class:`InvalidOrderError`).  The projection is dense: O(n^2) work
+#: and memory per interval, about 1 s at n = N_MAX.  A solution that needs more terms has a
+#: singularity the basis does not carry (pass ``breaks=`` at kinks of f) or should be split
+#: into intervals.
+N_MAX = _N_MAX
 
 __all__ = [
     "gauss_jacobi", "solve", "Solution", "IntervalSolution", "sie_exponents", "Exponents",

@@ -267,6 +267,34 @@ def jacobi_cauchy(c, alpha, beta, z):
         z = +-1, a complex z on [-1, 1], a non-finite z.
     InvalidExponentError
         alpha or beta <= -1, or alpha + beta not in {-1, 0, 1}.
+
+    Notes
+    -----
+    A three-term recurrence (DLMF 18.9.1-2) from F_0 in closed form near the interval, and
+    Miller's backward recurrence away from it, where F_k is the minimal solution
+    (Gautschi, SIAM Rev. 9 (1967) 24); see the module docstring.
+
+    References
+    ----------
+    G. Szegő, Orthogonal Polynomials, 4th ed., AMS (1975), sec. 4.61 (Jacobi functions of
+    the second kind).
+    F. G. Tricomi, Integral Equations (1957), sec. 4.3; Erdogan, Gupta & Cook (1973), ch. 7
+    (F_0 in closed form).
+    N. I. Muskhelishvili, Singular Integral Equations (1953) (Plemelj formulae).
+
+    Examples
+    --------
+    The Chebyshev weight (alpha = beta = -1/2): (1/pi) int (1 - t^2)^{-1/2} / (t - z) dt is
+    0 (principal value) inside (-1, 1) and -1/sqrt(z^2 - 1) off it:
+
+    >>> import numpy as np, sie
+    >>> F = sie.jacobi_cauchy([1.0], -0.5, -0.5, [0.3, 2.0])
+    >>> bool(abs(F[0]) < 1e-15), round(float(F[1]) * 3.0 ** 0.5, 12)
+    (True, -1.0)
+    >>> z = 2.0 + 1.0j
+    >>> F = sie.jacobi_cauchy([1.0], -0.5, -0.5, z)
+    >>> bool(abs(F + 1.0 / np.sqrt(z * z - 1.0)) < 1e-15)
+    True
     """
     from .errors import InvalidExponentError, check_exponent
     alpha = check_exponent("alpha", alpha)

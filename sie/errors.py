@@ -28,65 +28,276 @@ __all__ = [
 
 
 class SIEInputError(ValueError):
-    """Base class: an argument of an :mod:`sie` function is not admissible."""
+    """Base class: an argument of an :mod:`sie` function is not admissible.
+
+    Every input error of :mod:`sie` derives from it (and from ``ValueError``), so one
+    ``except sie.SIEInputError`` catches them all; the message names the argument, the value
+    received and what is allowed.  :func:`sie.jacobi_moment` and :func:`sie.jacobi_norms`
+    raise a plain ``ValueError`` instead.
+
+    Examples
+    --------
+    >>> import sie
+    >>> try:
+    ...     sie.gauss_jacobi(0, 0.0, 0.0)
+    ... except sie.SIEInputError as e:
+    ...     print(type(e).__name__, isinstance(e, ValueError))
+    InvalidOrderError True
+    """
 
 
 class InvalidOrderError(SIEInputError):
-    """``n`` (number of nodes / unknowns) is not an admissible integer."""
+    """``n`` (number of nodes / unknowns) is not an admissible integer.
+
+    Raised by :func:`sie.gauss_jacobi` (n < 1, not an integer, or n > 20000 with an exponent
+    above 5) and by :func:`sie.solve`, :func:`sie.dominant_functionals` and
+    :class:`sie.FunctionalsRule` (n < 1, n < 2 on an interval of index 1, or n > ``N_MAX``).
+
+    Examples
+    --------
+    >>> import sie
+    >>> sie.gauss_jacobi(0, 0.0, 0.0)
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidOrderError: n must be an integer >= 1, got 0
+    """
 
 
 class InvalidExponentError(SIEInputError):
-    """A Jacobi exponent is not > -1 (or not finite)."""
+    """A Jacobi exponent is not > -1 (or not finite).
+
+    The weight (1-x)^alpha (1+x)^beta is integrable on [-1, 1] only for alpha, beta > -1.
+    Raised by :func:`sie.gauss_jacobi` and :func:`sie.jacobi_cauchy` (which also needs
+    alpha + beta in {-1, 0, 1}).
+
+    Examples
+    --------
+    >>> import sie
+    >>> sie.gauss_jacobi(3, -1.0, 0.0)
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidExponentError: alpha must be > -1 (the weight ... must be integrable), got -1.0
+    """
 
 
 class InvalidCoefficientError(SIEInputError):
-    """``a`` or ``b`` is not finite, or ``b == 0``."""
+    """``a`` or ``b`` is not finite, or ``b == 0``.
+
+    With b = 0 the equation has no Cauchy integral (it is not a singular integral equation).
+    Raised by :func:`sie.solve`, :func:`sie.dominant_functionals` and
+    :class:`sie.FunctionalsRule`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=0.0, n=4, left="bounded", right="singular")
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidCoefficientError: b must be nonzero (b = 0 leaves no singular integral: ...)
+    """
 
 
 class InvalidEndConditionError(SIEInputError):
-    """``left``/``right`` is not one of "bounded", "singular"."""
+    """``left``/``right`` is not one of "bounded", "singular".
+
+    Raised by :func:`sie.solve`, :func:`sie.dominant_functionals` and
+    :class:`sie.FunctionalsRule`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=4, left="free", right="singular")
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidEndConditionError: left must be "bounded" or "singular", got 'free'
+    """
 
 
 class SideConditionError(SIEInputError):
-    """``total`` missing for index 1, given for another index, or not finite."""
+    """``total`` missing for index 1, given for another index, or not finite.
+
+    With both ends singular (index 1) the dominant operator has a one-dimensional null space
+    and int psi = ``total`` fixes the solution (Muskhelishvili 1953, ch. 10); with any other
+    index the solution is unique and ``total`` must not be given.  Raised by
+    :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=4, left="singular", right="singular")
+    Traceback (most recent call last):
+        ...
+    sie.errors.SideConditionError: total (= int psi) is required when both ends are singular (index 1)
+    """
 
 
 class CallableOutputError(SIEInputError):
-    """A user callable returned the wrong shape or a non-finite value."""
+    """A user callable returned the wrong shape or a non-finite value.
+
+    Raised when ``f`` or ``kernel`` is not callable, raises, is not vectorised (called with an
+    array it must return an array of that shape), or returns complex or non-finite values; the
+    message names the callable and the point.  Raised by :func:`sie.solve`,
+    :func:`sie.dominant_functionals` and :class:`sie.FunctionalsRule`.
+
+    Examples
+    --------
+    >>> import sie
+    >>> sie.solve(lambda s: 1.0, a=1.0, b=1.0, n=4, left="bounded", right="singular")
+    Traceback (most recent call last):
+        ...
+    sie.errors.CallableOutputError: f must be vectorised: called with arrays of shape (4,) it must return that shape, got ()
+    """
 
 
 class InvalidBreakpointError(SIEInputError):
-    """A break point is not a finite number strictly inside (-1, 1)."""
+    """A break point is not a finite number strictly inside (-1, 1).
+
+    (With ``intervals``: strictly inside one of them.)  Raised by :func:`sie.solve` and
+    :func:`sie.dominant_functionals`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=4, left="bounded", right="singular", breaks=(1.5,))
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidBreakpointError: breaks must lie strictly inside (-1.0, 1.0); got ...1.5...
+    """
 
 
 class EvaluationPointError(SIEInputError):
-    """An evaluation point is not finite or lies where the quantity is infinite."""
+    """An evaluation point is not finite or lies where the quantity is infinite.
+
+    Raised by the methods of :class:`sie.Solution` (a point outside L for ``phi`` and
+    ``weight``, a singular end for ``psi``, an end for ``cauchy``, a complex point where a
+    real one is needed) and by :func:`sie.jacobi_cauchy` (z = +-1, a complex z on [-1, 1]).
+
+    Examples
+    --------
+    >>> import sie
+    >>> sie.jacobi_cauchy([1.0], -0.5, -0.5, 1.0)
+    Traceback (most recent call last):
+        ...
+    sie.errors.EvaluationPointError: z lies at an end of the interval [-1.0, 1.0], where the Cauchy transform is infinite or undefined
+    """
 
 
 class InvalidIntervalError(SIEInputError):
-    """``intervals`` is not a sequence of finite, ascending, disjoint (c, d) pairs with c < d."""
+    """``intervals`` is not a sequence of finite, ascending, disjoint (c, d) pairs with c < d.
+
+    Raised by :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=4, left="bounded", right="singular",
+    ...           intervals=[(0.0, -1.0)])
+    Traceback (most recent call last):
+        ...
+    sie.errors.InvalidIntervalError: intervals[0] = (0.0, -1.0): need c < d
+    """
 
 
 class PerIntervalArgumentError(SIEInputError):
-    """A per-interval argument (n, left, right, total, breaks) does not fit the intervals."""
+    """A per-interval argument (n, left, right, total, breaks) does not fit the intervals.
+
+    Each of them is one value for all intervals or a sequence with one entry per interval.
+    Raised by :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=[4], left="bounded", right="singular",
+    ...           intervals=[(-1.0, -0.5), (0.0, 1.0)])
+    Traceback (most recent call last):
+        ...
+    sie.errors.PerIntervalArgumentError: n must be one value for all 2 intervals or a sequence of 2 (one per interval), got 1 entries
+    """
 
 
 class KernelSingularityError(SIEInputError):
     """The kernel k(s, t) is unbounded at an end (a fixed singularity, e.g. the edge crack's
-    generalised Cauchy kernel): it changes the end exponent, which the Jacobi basis fixes."""
+    generalised Cauchy kernel): it changes the end exponent, which the Jacobi basis fixes.
+
+    :func:`sie.solve` samples the kernel at distances 1e-3 and 1e-6 (relative to the
+    half-widths) inside every pair of interval ends and raises when it grows more than
+    100-fold there, or cannot be evaluated there.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+    equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+    Noordhoff (1973), ch. 7 (generalised Cauchy kernels of edge cracks).
+    Kaya & Erdogan (1987), on treating such kernels analytically.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sie.solve(np.cos, a=1.0, b=1.0, n=4, left="bounded", right="singular",
+    ...           kernel=lambda s, t: 1.0 / (2.0 - s - t))
+    Traceback (most recent call last):
+        ...
+    sie.errors.KernelSingularityError: the kernel grows without bound toward (s, t) = (1.0, 1.0) ...
+    """
 
 
 class SIEWarning(UserWarning):
-    """Base class of the warnings of :mod:`sie`: a result is returned but is suspect."""
+    """Base class of the warnings of :mod:`sie`: a result is returned but is suspect.
+
+    Examples
+    --------
+    >>> import sie
+    >>> [issubclass(w, sie.SIEWarning)
+    ...  for w in (sie.InconsistentEquationWarning, sie.ResidualWarning)]
+    [True, True]
+    """
 
 
 class InconsistentEquationWarning(SIEWarning):
     """Index -1 (both ends bounded) and f violates the solvability condition: the returned
-    psi solves the equation with f minus its inconsistent part only."""
+    psi solves the equation with f minus its inconsistent part only.
+
+    The condition is that the weighted mean of f against (1-s)^{-alpha} (1+s)^{-beta}
+    vanish (Muskhelishvili 1953, ch. 10; for the cylindrical punch, Zhou, Lee & Jang 2014,
+    eq. (5.40)); its value is ``Solution.consistency``.  Warned by :func:`sie.solve` when
+    abs(consistency) exceeds 1e-8 max abs(f).
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953), ch. 10.
+
+    Examples
+    --------
+    f = 1 is not orthogonal to 1/sqrt(1 - s^2), so (1/pi) PV int psi/(t - s) dt = 1 has no
+    solution bounded at both ends:
+
+    >>> import warnings, numpy as np, sie
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     sol = sie.solve(np.ones_like, a=0.0, b=1.0, n=6, left="bounded", right="bounded")
+    >>> [w.category.__name__ for w in caught], round(sol.consistency, 12)
+    (['InconsistentEquationWarning'], 1.0)
+    """
 
 
 class ResidualWarning(SIEWarning):
-    """The returned solution leaves a residual in the equation that is not small against f."""
+    """The returned solution leaves a residual in the equation that is not small against f.
+
+    :func:`sie.solve` checks the equation at 7 points of each interval between the
+    collocation nodes when there is a kernel or several intervals (elsewhere the collocation
+    is exact by construction) and warns when the residual exceeds 1e-6 of the scale of f:
+    n does not resolve f or the kernel, or the kernel is not smooth.
+
+    Examples
+    --------
+    >>> import warnings, numpy as np, sie
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     sol = sie.solve(np.cos, a=0.0, b=1.0, n=6, left="bounded", right="singular",
+    ...                     kernel=lambda s, t: np.exp(30.0 * s * t))
+    >>> [w.category.__name__ for w in caught]
+    ['ResidualWarning']
+    """
 
 
 def check_finite_real(name: str, value, error=SIEInputError) -> float:

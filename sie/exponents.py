@@ -4,7 +4,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["Exponents", "sie_exponents", "END_CHOICES"]
+from .errors import InvalidCoefficientError, InvalidEndConditionError, check_finite_real
+
+__all__ = ["Exponents", "sie_exponents", "exponents_of", "check_coefficients", "check_end",
+           "END_CHOICES"]
 
 END_CHOICES = ("bounded", "singular")
 
@@ -16,13 +19,41 @@ END_CHOICES = ("bounded", "singular")
 class Exponents:
     """Endpoint exponents of psi = (1-s)^alpha (1+s)^beta phi.
 
-    alpha0 in (0,1) solves cot(pi alpha0) = -a/b.  ``cot`` = cot(pi alpha) = -a/b,
-    ``sin`` = sin(pi alpha).  The shifted exponents 1 + alpha, 1 + beta (those of
-    the solution weight at its ends) and 1 - alpha, 1 - beta (those of the
-    projection weight (1-s)^{-alpha}(1+s)^{-beta}) are carried separately, each
-    computed without cancellation from alpha0 or 1 - alpha0: when an exponent is
-    within 1e-8 of -1, recomputing e + 1 from a rounded e would lose 8 digits,
-    and moments ~ 1/(e+1) with it.
+    Returned by :func:`sie_exponents`.  alpha0 in (0,1) solves cot(pi alpha0) = -a/b.
+    The shifted exponents 1 + alpha, 1 + beta (those of the solution weight at its ends)
+    and 1 - alpha, 1 - beta (those of the projection weight (1-s)^{-alpha}(1+s)^{-beta}) are
+    carried separately, each computed without cancellation from alpha0 or 1 - alpha0: when
+    an exponent is within 1e-8 of -1, recomputing e + 1 from a rounded e would lose 8
+    digits, and moments ~ 1/(e+1) with it.
+
+    Attributes
+    ----------
+    alpha, beta : float
+        Exponents at the right (s = 1) and the left (s = -1) end, in (-1, 1).
+    kappa : int
+        Index -(alpha + beta): 1 (both ends singular), 0 or -1 (both bounded).
+    alpha0 : float
+        The root in (0, 1) of cot(pi alpha0) = -a/b.
+    cot : float
+        cot(pi alpha) = -a/b.
+    sin : float
+        sin(pi alpha).
+    alpha_p1, beta_p1 : float
+        1 + alpha, 1 + beta.
+    alpha_m1, beta_m1 : float
+        1 - alpha, 1 - beta.
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10; Erdogan, Gupta & Cook
+    (1973), ch. 7.
+
+    Examples
+    --------
+    >>> import sie
+    >>> e = sie.sie_exponents(-1.0, 1.0, "bounded", "bounded")    # cot(pi alpha0) = 1
+    >>> type(e).__name__, round(e.alpha, 12), round(e.beta, 12), e.kappa, round(e.sin, 12)
+    ('Exponents', 0.25, 0.75, -1, 0.707106781187)
     """
     alpha: float
     beta: float
@@ -41,8 +72,69 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
 
     Right end: alpha = alpha0 ("bounded") or alpha0 - 1 ("singular"); left end:
     beta = 1 - alpha0 ("bounded") or -alpha0 ("singular"); kappa = -(alpha+beta).
-    (Muskhelishvili 1953, ch. 10; Erdogan, Gupta & Cook 1973.)
+    alpha0 is the principal arccot in (0, 1), for every sign of a/b.
+
+    Parameters
+    ----------
+    a, b : float
+        Coefficients of a psi + (b/pi) PV int psi/(t - s) dt: finite, b != 0.
+    left, right : {"bounded", "singular"}
+        Behaviour of psi at s = -1 and s = +1.
+
+    Returns
+    -------
+    Exponents
+
+    Raises
+    ------
+    InvalidCoefficientError
+        a or b not a finite real number, or b = 0.
+    InvalidEndConditionError
+        left or right not "bounded" or "singular".
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10; Erdogan, Gupta & Cook
+    (1973), ch. 7.  The same rule with cot(pi alpha) = -mu_f N12 / N11 gives the exponents
+    of the contact pressure (Zhou, Lee & Jang 2014, eqs. (4.14)-(4.18), with the branch of
+    the arccot corrected: see the documentation, Theory: errata of Zhou et al. 2014).
+
+    Examples
+    --------
+    a = 0 (the airfoil equation): the exponents are +-1/2.
+
+    >>> import sie
+    >>> e = sie.sie_exponents(0.0, 1.0, "singular", "bounded")
+    >>> e.alpha, e.beta, e.kappa
+    (0.5, -0.5, 0)
+    >>> e = sie.sie_exponents(-1.0, 1.0, "singular", "singular")   # alpha0 = 1/4
+    >>> round(e.alpha, 12), round(e.beta, 12), e.kappa
+    (-0.75, -0.25, 1)
     """
+    a, b = check_coefficients(a, b)
+    return exponents_of(a, b, check_end("left", left), check_end("right", right))
+
+
+def check_coefficients(a, b) -> tuple[float, float]:
+    """(a, b) as floats: finite reals with b != 0, else InvalidCoefficientError."""
+    a = check_finite_real("a", a, InvalidCoefficientError)
+    b = check_finite_real("b", b, InvalidCoefficientError)
+    if b == 0.0:
+        raise InvalidCoefficientError(
+            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
+    return a, b
+
+
+def check_end(name: str, v) -> str:
+    """``v`` if it is "bounded" or "singular", else InvalidEndConditionError."""
+    if v not in END_CHOICES:
+        raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
+    return v
+
+
+def exponents_of(a: float, b: float, left: str, right: str) -> Exponents:
+    """:func:`sie_exponents` of inputs already checked (:func:`check_coefficients`,
+    :func:`check_end`)."""
     y = -a / b                                   # cot(pi alpha0)
     alpha0 = math.atan2(1.0, y) / math.pi        # principal arccot, in (0, 1)
     alpha0c = math.atan2(1.0, -y) / math.pi      # 1 - alpha0, without cancellation

@@ -110,7 +110,41 @@ def _f64(x):
 
 
 def jacobi_series(c, a, b, x):
-    """Evaluate sum_k c[k] P_k^{(a,b)}(x) at the points x (any real x)."""
+    """Evaluate sum_k c[k] P_k^{(a,b)}(x) at the points x (any real x).
+
+    Parameters
+    ----------
+    c : array_like
+        Coefficients, in the standard normalisation of P_k^{(a,b)} (as
+        ``scipy.special.eval_jacobi``: P_k(1) = (a+1)_k / k!).
+    a, b : float
+        Jacobi parameters (not checked; the recurrence needs a + b + 2 != 0 and no
+        vanishing denominator, as for a, b > -1).
+    x : array_like
+        Points, any shape.
+
+    Returns
+    -------
+    ndarray
+        The series at x, of x's shape.
+
+    Notes
+    -----
+    The three-term recurrence DLMF 18.9.1-2, summed in blocks (BLAS products with blocks
+    of the Vandermonde matrix, memory O(len(c)) per point).
+
+    References
+    ----------
+    NIST DLMF, sec. 18.9 (recurrence) and Table 18.6.1 (P_k(1)).
+
+    Examples
+    --------
+    P_2^{(0,0)}(x) = (3 x^2 - 1) / 2, the Legendre polynomial:
+
+    >>> import sie
+    >>> [round(float(v), 12) for v in sie.jacobi_series([0.0, 0.0, 1.0], 0.0, 0.0, [0.5, 1.0])]
+    [-0.125, 1.0]
+    """
     x = np.asarray(x, dtype=float)
     c = _f64(c)
     xf = _f64(x.ravel())
@@ -139,7 +173,38 @@ def jacobi_project(v, a, b, x, n):
 
 
 def jacobi_norms(n, a, b):
-    """h_k = int (1-x)^a (1+x)^b P_k^{(a,b)}(x)^2 dx, k = 0..n-1 (a fresh array)."""
+    """h_k = int (1-x)^a (1+x)^b P_k^{(a,b)}(x)^2 dx, k = 0..n-1 (a fresh array).
+
+    Parameters
+    ----------
+    n : int
+        Number of norms.
+    a, b : float
+        Jacobi parameters, both > -1.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        h_0 = 2^{a+b+1} B(a+1, b+1) and, for k >= 1,
+        h_k = 2^{a+b+1} Gamma(k+a+1) Gamma(k+b+1) / ((2k+a+b+1) Gamma(k+a+b+1) k!).
+
+    Raises
+    ------
+    ValueError
+        a or b <= -1.
+
+    References
+    ----------
+    NIST DLMF, Table 18.3.1.
+
+    Examples
+    --------
+    Legendre (a = b = 0): h_k = 2 / (2k + 1).
+
+    >>> import sie
+    >>> [round(float(h), 12) for h in sie.jacobi_norms(3, 0.0, 0.0)]
+    [2.0, 0.666666666667, 0.4]
+    """
     return jacobi_norms_cached(int(n), float(a), float(b)).copy()
 
 

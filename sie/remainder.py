@@ -266,7 +266,7 @@ class InversionRemainder:
         q = s.size // (breaks.size + 1)
         # I(x) for x close to a break c: in the neighbouring piece the integrand has a pole
         # at distance |x - c|, so the pieces are graded toward the breaks (Gauss-Legendre on
-        # a geometric mesh resolves a pole at any distance; without it phi(c + 1e-3) was
+        # a geometric mesh resolves a pole at any distance; without it phi(c + 1e-3) is
         # off by 1e-4 at n = 24)
         pts = graded_points(breaks)
         alpha, beta = piece.alpha, piece.beta
@@ -421,7 +421,7 @@ class InversionRemainder:
         # the subtraction point x0: the point of [-1, 1] nearest to v, or the end nearer to it
         # when that end is closer to it than v is (otherwise the piece between x0 and the
         # graded pieces on the far side of it would see the end's singular weight at a
-        # fraction of its length: at v = 0.997 + 2.05i, 16 nodes were then off by 1e-8)
+        # fraction of its length: at v = 0.997 + 2.05i, 16 nodes would be off by 1e-8)
         dist = np.abs(v.imag)
         right = (zm1.real >= 0.0) | ((-zm1.real < dist) & (-zm1.real <= zp1.real))
         left = ((zp1.real <= 0.0) | (zp1.real < dist)) & ~right

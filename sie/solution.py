@@ -25,17 +25,44 @@ __all__ = ["Solution", "IntervalSolution"]
 class IntervalSolution:
     """psi on one interval: psi(s) = w(u) phi(u), u = (s - m)/h, w = (1-u)^alpha (1+u)^beta.
 
+    One entry of :attr:`Solution.pieces`, built by :func:`sie.solve`; its methods work in
+    the local coordinate u in [-1, 1] (m the midpoint, h the half-width of the interval).
+
     Attributes
     ----------
     interval : Interval
+        The interval [c, d] (``interval.c``, ``interval.d``).
+    exp : Exponents
+        Its exponents and index (:func:`sie.sie_exponents`).
     alpha, beta : float
+        Exponents of psi at the right and the left end.
     kappa : int
+        Index -(alpha + beta).
     n : int
+        Number of Jacobi coefficients.
     coefficients : ndarray
         c_k with phi = sum_k c_k P_k^{(alpha,beta)} (scipy's normalisation); read-only.
     consistency : float or None
         kappa = -1: the weighted mean of g = f - (coupling + kernel) psi against
         (1-u)^{-alpha}(1+u)^{-beta}, in units of f; zero iff the equation is solvable.
+    remainder : object or None
+        With ``breaks``: the pointwise correction of phi (:mod:`sie.remainder`), built on
+        first use; None without breaks.
+
+    References
+    ----------
+    Erdogan, Gupta & Cook (1973), ch. 7; Muskhelishvili, Singular Integral Equations (1953),
+    ch. 10 (the exponents and the solvability condition).
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sol = sie.solve(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    >>> piece = sol.pieces[0]
+    >>> (piece.interval.c, piece.interval.d), piece.kappa, piece.n
+    ((-1.0, 1.0), -1, 4)
+    >>> round(float(piece.coefficients[0]), 12)        # psi = sqrt(1 - s^2): phi = 1
+    1.0
     """
     interval: Interval
     exp: Exponents = field(repr=False)
@@ -130,15 +157,60 @@ class IntervalSolution:
 class Solution:
     """Solution psi of a psi + (b/pi) PV int_L psi(t)/(t-s) dt + int_L k(s,t) psi(t) dt = f(s).
 
-    Call it to evaluate psi.  Per-interval attributes (``alpha``, ``beta``, ``kappa``, ``n``,
-    ``coefficients``, ``consistency``) are scalars when :func:`sie.solve` was called without
-    ``intervals`` (one interval [-1, 1]) and tuples with one entry per interval otherwise.
+    Returned by :func:`sie.solve`; immutable.  Call it to evaluate psi.  Per-interval
+    attributes (``alpha``, ``beta``, ``kappa``, ``n``, ``coefficients``, ``consistency``) are
+    scalars when :func:`sie.solve` was called without ``intervals`` (one interval [-1, 1])
+    and tuples with one entry per interval otherwise.  Methods: ``sol(s)`` (psi),
+    :meth:`phi`, :meth:`weight`, :meth:`integral`, :meth:`endpoint_value`, :meth:`cauchy` and
+    :meth:`log_potential`.
 
     Attributes
     ----------
     pieces : tuple of IntervalSolution
+        psi on each interval.
     a, b : float
+        The coefficients of the equation.
     intervals : tuple of (c, d)
+        L, left to right.
+    alpha, beta : float or tuple
+        Exponents of psi at the right and the left end(s).
+    kappa : int or tuple
+        Index (indices) -(alpha + beta).
+    n : int or tuple
+        Number(s) of Jacobi coefficients.
+    coefficients : ndarray or tuple of ndarray
+        c_k with phi = sum_k c_k P_k^{(alpha,beta)}, per interval (read-only).
+    consistency : float, None or tuple
+        Solvability residual(s) of index -1 intervals (None elsewhere).
+    condition : float
+        2-norm condition number of the (row-scaled) collocation system.
+
+    Raises
+    ------
+    EvaluationPointError
+        From the methods: points outside L (``phi``, ``weight``), a singular end (psi), an
+        end (``cauchy``), complex or non-finite points where real ones are needed.
+
+    References
+    ----------
+    Erdogan, Gupta & Cook (1973), ch. 7; Krenk, Quart. Appl. Math. 33 (1975) 225;
+    Muskhelishvili, Singular Integral Equations (1953), ch. 10 (Plemelj formulae, index).
+
+    Examples
+    --------
+    psi(s) = sqrt(1 - s^2) solves (1/pi) PV int psi/(t - s) dt = -s; its Cauchy transform
+    off the interval is (1/pi) int psi/(t - z) dt = sqrt(z^2 - 1) - z (= sqrt(3) - 2 at z = 2):
+
+    >>> import math, sie
+    >>> sol = sie.solve(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    >>> sol.intervals, sol.kappa
+    (((-1.0, 1.0),), -1)
+    >>> round(float(sol(0.6)), 12), round(float(sol.phi(0.6)), 12)   # psi and psi / w
+    (0.8, 1.0)
+    >>> round(float(sol.cauchy(2.0)), 12) == round(math.sqrt(3.0) - 2.0, 12)
+    True
+    >>> round(float(sol.cauchy(0.5)), 12)                            # principal value: -s
+    -0.5
     """
     pieces: tuple
     a: float

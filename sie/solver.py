@@ -33,7 +33,7 @@ from .assembly import assemble_and_solve, operator_images, probe_kernel
 from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidCoefficientError,
                      InvalidEndConditionError, InvalidOrderError, ResidualWarning,
                      SideConditionError, call_checked, check_finite_real, check_order)
-from .exponents import END_CHOICES, Exponents, sie_exponents
+from .exponents import Exponents, check_coefficients, check_end, exponents_of
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
@@ -42,7 +42,12 @@ from .unknowns import IntervalUnknown
 __all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals",
            "Functionals", "FunctionalsRule", "N_MAX"]
 
-N_MAX = 20_000          # basis size per interval: the projection is dense, O(n^2) work
+#: Largest number of Jacobi coefficients per interval that :func:`solve`,
+#: :func:`dominant_functionals` and :class:`FunctionalsRule` accept (a larger ``n`` raises
+#: :class:`~sie.errors.InvalidOrderError`).  The projection is dense: O(n^2) work and memory
+#: per interval, about 1 s at n = N_MAX.  A solution that needs more terms has a singularity
+#: the basis does not carry (pass ``breaks=`` at kinks of f) or should be split into intervals.
+N_MAX = 20_000
 CONSISTENCY_TOL = 1e-8  # |consistency| above this times max|f| warns (index -1)
 RESIDUAL_TOL = 1e-6     # equation residual above this times its scale warns
 _CHECK_POINTS = np.cos(np.pi * (np.arange(7) + 0.5) / 7) * 0.999
@@ -52,21 +57,6 @@ _NO_POINTS = np.empty(0)
 # --------------------------------------------------------------------------
 # validation
 # --------------------------------------------------------------------------
-def _check_coefficients(a, b):
-    a = check_finite_real("a", a, InvalidCoefficientError)
-    b = check_finite_real("b", b, InvalidCoefficientError)
-    if b == 0.0:
-        raise InvalidCoefficientError(
-            "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
-    return a, b
-
-
-def _check_ends(name, v):
-    if v not in END_CHOICES:
-        raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
-    return v
-
-
 def _check_callable(name, fn, what):
     if not callable(fn):
         raise CallableOutputError(f"{name} must be a {what}, got {type(fn).__name__}")
@@ -191,9 +181,24 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
 
     Raises
     ------
-    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError,
-    SideConditionError, InvalidBreakpointError, InvalidIntervalError,
-    PerIntervalArgumentError, KernelSingularityError, CallableOutputError
+    InvalidCoefficientError
+        a or b not finite, or b = 0.
+    InvalidEndConditionError
+        ``left`` or ``right`` not "bounded" or "singular".
+    InvalidOrderError
+        n not an integer, n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``.
+    SideConditionError
+        ``total`` missing where kappa = 1, given elsewhere, or not finite.
+    InvalidBreakpointError
+        A break not strictly inside an interval.
+    InvalidIntervalError
+        ``intervals`` not finite, ascending and disjoint.
+    PerIntervalArgumentError
+        A per-interval argument whose length does not match ``intervals``.
+    KernelSingularityError
+        ``kernel`` unbounded next to an end.
+    CallableOutputError
+        ``f`` or ``kernel`` not callable, not vectorised, complex or not finite.
 
     Warns
     -----
@@ -204,19 +209,46 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
 
     Notes
     -----
-    Erdogan, Gupta & Cook (1973); Krenk, Quart. Appl. Math. 33 (1975) 225; Muskhelishvili,
-    Singular Integral Equations (1953).  Spectral convergence for analytic f and k.
+    Per interval, psi = w phi with w = (1-u)^alpha (1+u)^beta, the exponents from
+    cot(pi alpha0) = -a/b and the end choices (:func:`sie_exponents`), and phi a Jacobi
+    series P_k^{(alpha,beta)}; the equation is collocated at the roots of
+    P_{n-kappa}^{(-alpha,-beta)}, where the dominant operator maps the basis exactly
+    (Erdogan, Gupta & Cook 1973; Krenk 1975).  Spectral convergence for analytic f and k.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+    equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+    Noordhoff (1973), ch. 7.
+    S. Krenk, "On quadrature formulas for singular integral equations of the first and the
+    second kind", Quart. Appl. Math. 33 (1975) 225.
+    N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953), ch. 10 (index,
+    side conditions and solvability).
+
+    Examples
+    --------
+    (1/pi) PV int sqrt(1 - t^2) / (t - s) dt = -s on (-1, 1), so with a = 0, b = 1,
+    f(s) = -s and both ends bounded (index -1) the solution is psi(s) = sqrt(1 - s^2):
+
+    >>> import numpy as np, sie
+    >>> sol = sie.solve(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    >>> sol.alpha, sol.beta, sol.kappa
+    (0.5, 0.5, -1)
+    >>> [round(float(v), 12) for v in sol(np.array([0.0, 0.6]))]      # sqrt(1 - s^2)
+    [1.0, 0.8]
+    >>> round(sol.integral() / (np.pi / 2), 12)                        # int psi = pi/2
+    1.0
     """
-    a, b = _check_coefficients(a, b)
+    a, b = check_coefficients(a, b)
     _check_callable("f", f, "vectorised callable f(s)")
     if kernel is not None:
         _check_callable("kernel", kernel, "callable k(s, t) or None")
     multi = intervals is not None
     ivs = check_intervals(intervals)
     J = len(ivs)
-    lefts = [_check_ends("left", v) for v in per_interval("left", left, J)]
-    rights = [_check_ends("right", v) for v in per_interval("right", right, J)]
-    exps = [sie_exponents(a, b, l, r) for l, r in zip(lefts, rights)]
+    lefts = [check_end("left", v) for v in per_interval("left", left, J)]
+    rights = [check_end("right", v) for v in per_interval("right", right, J)]
+    exps = [exponents_of(a, b, l, r) for l, r in zip(lefts, rights)]
     ns = [_check_n(v, e, f"[{j}]" if multi else "")
           for j, (v, e) in enumerate(zip(per_interval("n", n, J), exps))]
     totals = _check_totals(total, exps, multi)
@@ -321,12 +353,30 @@ def _sqrt_norms(n, a, b):
 class Functionals:
     """What a search over the interval needs, without forming the solution.
 
+    Returned by :func:`dominant_functionals` and :class:`FunctionalsRule`.
+
+    Attributes
+    ----------
     integral : float or None
         int psi for kappa <= 0 (mu_0 c_0); None for kappa = 1 (it is the side condition).
     consistency : float or None
         kappa = -1: the solvability residual (as ``Solution.consistency``); None otherwise.
     alpha, beta : float
+        Exponents of psi at the right and left end.
     kappa : int
+        Index -(alpha + beta).
+
+    References
+    ----------
+    As for :func:`dominant_functionals`.
+
+    Examples
+    --------
+    >>> import sie
+    >>> fn = sie.dominant_functionals(lambda s: -s, a=0.0, b=1.0, n=4,
+    ...                               left="bounded", right="bounded")
+    >>> type(fn).__name__, fn.kappa, round(fn.integral, 12), abs(fn.consistency) < 1e-14
+    ('Functionals', -1, 1.570796326795, True)
     """
     integral: float | None
     consistency: float | None
@@ -339,8 +389,8 @@ def _unit_unknown(a, b, n, left, right, breaks, count=None):
     """Validated exponents and, for index <= 0, the one-interval unknown on [-1, 1] whose
     rule gives the projections on P_m, m < count (default: those the functionals need);
     None for index 1 (nothing to project)."""
-    a, b = _check_coefficients(a, b)
-    e = sie_exponents(a, b, _check_ends("left", left), _check_ends("right", right))
+    a, b = check_coefficients(a, b)
+    e = exponents_of(a, b, check_end("left", left), check_end("right", right))
     n = _check_n(n, e, "")
     br = split_breaks(breaks, check_intervals(None))[0]
     if e.kappa == 1:
@@ -350,13 +400,60 @@ def _unit_unknown(a, b, n, left, right, breaks, count=None):
 
 
 def dominant_functionals(f, *, a, b, n, left, right, breaks=()):
-    """int psi and the solvability residual of a psi + (b/pi) PV int psi/(t-s) dt = f on
-    [-1, 1], exactly as :func:`solve` (same rule, same n) would return them, at the cost of
-    one Gauss sum: int psi = mu_0 c_0 with c_0 = f_0/lambda (kappa = 0) or f_1/lambda
-    (kappa = -1), and the residual is f_0 (kappa = -1).
+    """int psi and the solvability residual of the dominant equation, without solving it.
 
+    For a psi + (b/pi) PV int psi/(t-s) dt = f on [-1, 1] (no kernel), exactly as
+    :func:`solve` (same rule, same n) would return them, at the cost of one Gauss sum:
+    int psi = mu_0 c_0 with c_0 = f_0/lambda (kappa = 0) or f_1/lambda (kappa = -1), and
+    the residual is f_0 (kappa = -1), f_m the projections of f on P_m^{(-alpha,-beta)}.
     For searches over the interval (free contact ends), where the full solution is only
-    needed at the end.  No kernel.
+    needed at the end.
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised right-hand side f(s).
+    a, b : float
+        Coefficients; b != 0.
+    n : int
+        Number of Jacobi coefficients (as for :func:`solve`), at most ``N_MAX``.
+    left, right : {"bounded", "singular"}
+        Behaviour of psi at each end.
+    breaks : sequence of float, optional
+        Points strictly inside (-1, 1) where f or a derivative jumps.
+
+    Returns
+    -------
+    Functionals
+        ``integral`` is None and ``consistency`` None for kappa = 1 (both ends singular:
+        int psi is then the side condition).
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError,
+    InvalidBreakpointError, CallableOutputError
+        As for :func:`solve`.
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10 (solvability for index
+    -1); Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (5.40) (the condition that fixes the
+    free ends of a cylindrical punch).
+
+    Examples
+    --------
+    psi = sqrt(1 - s^2) solves (1/pi) PV int psi/(t - s) dt = -s: int psi = pi/2, and the
+    equation is solvable (residual 0); f = 1 is not (residual 1, the weighted mean of f):
+
+    >>> import numpy as np, sie
+    >>> fn = sie.dominant_functionals(lambda s: -s, a=0.0, b=1.0, n=4,
+    ...                               left="bounded", right="bounded")
+    >>> round(fn.integral / (np.pi / 2), 12), abs(fn.consistency) < 1e-14
+    (1.0, True)
+    >>> fn = sie.dominant_functionals(np.ones_like, a=0.0, b=1.0, n=4,
+    ...                               left="bounded", right="bounded")
+    >>> round(fn.consistency, 12)
+    1.0
     """
     _check_callable("f", f, "vectorised callable f(s)")
     e, u = _unit_unknown(a, b, n, left, right, breaks)
@@ -376,6 +473,42 @@ class FunctionalsRule:
     one evaluation of f at the fixed nodes and two dot products.  For searches that try
     many right-hand sides of one equation (free contact ends).  ``rule(f)`` returns the same
     :class:`Functionals` as ``dominant_functionals(f, a=..., b=..., n=..., left=..., right=...)``.
+
+    Parameters
+    ----------
+    a, b : float
+        Coefficients; b != 0.
+    n : int
+        Number of Jacobi coefficients, at most ``N_MAX``.
+    left, right : {"bounded", "singular"}
+        Behaviour of psi at each end.
+
+    Attributes
+    ----------
+    a, b : float
+    n : int
+    exponents : Exponents
+        The exponents of the end choices (:func:`sie_exponents`).
+    kappa : int
+        The index.
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError
+        As for :func:`solve`; a call raises :class:`CallableOutputError` for an f that is
+        not a vectorised real callable.
+
+    References
+    ----------
+    As for :func:`dominant_functionals`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> rule = sie.FunctionalsRule(a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    >>> fn = rule(lambda s: -s)                      # psi = sqrt(1 - s^2)
+    >>> round(fn.integral / (np.pi / 2), 12), abs(fn.consistency) < 1e-14
+    (1.0, True)
     """
 
     def __init__(self, *, a, b, n, left, right):

@@ -66,7 +66,35 @@ def gamma_ratio(z: float, a: float) -> float:
 def jacobi_moment(alpha: float, beta: float) -> float:
     """mu_0 = int_{-1}^{1} (1-x)^alpha (1+x)^beta dx = 2^{alpha+beta+1} B(alpha+1, beta+1).
 
-    DLMF 5.12.1; also Zhou et al. 2014, eq. (5.5).
+    Parameters
+    ----------
+    alpha, beta : float
+        Exponents of the weight, both > -1.
+
+    Returns
+    -------
+    float
+        The zeroth moment of the Jacobi weight.
+
+    Raises
+    ------
+    ValueError
+        alpha or beta <= -1 (the weight is not integrable).
+
+    References
+    ----------
+    NIST DLMF 5.12.1 (the Beta integral); also Zhou, Lee & Jang, Arch. Mech. 66 (2014),
+    eq. (5.5).
+
+    Examples
+    --------
+    int (1 - x^2)^{1/2} dx = pi/2 and int (1 - x^2)^{-1/2} dx = pi:
+
+    >>> import math, sie
+    >>> round(sie.jacobi_moment(0.5, 0.5) / (math.pi / 2), 12)
+    1.0
+    >>> round(sie.jacobi_moment(-0.5, -0.5) / math.pi, 12)
+    1.0
     """
     if not (alpha > -1.0 and beta > -1.0):
         raise ValueError(f"jacobi_moment needs alpha, beta > -1, got {alpha!r}, {beta!r}")

@@ -5,8 +5,8 @@ so that it can serve as a reference for multi-zone contact (a face that touches 
 places, zones that merge as the load grows).  No tests live here; see
 ``tests/test_bem_reference.py``.
 
-The model (conventions of ``shared/notes/paper-errata.md``)
-----------------------------------------------------------
+The model (conventions of the documentation, Theory: the contact model and its conventions)
+------------------------------------------------------------------------------------------
 Half-space Y < 0, v the Y-displacement of its surface, pressure p >= 0 (compressive positive),
 shear q = mu_f p.  The surface relation dv/dX = N12 q + N11 Hc[p], with
 Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt, integrates, using

@@ -301,16 +301,15 @@ def mcewen_hertz(X, Y, p0=1.0, a=1.0, mu=0.0):
         sigma_z = -(q0/a) n (m^2 - z^2)/(m^2 + n^2),
         tau_xz  = -(q0/a) [m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2 z].
 
-    SIGN CORRECTIONS.  The formulas as handed to us (brief for this test) had
-    tau_xz = +(p0/a) n (...) for the normal load and sigma_x = -(q0/a)[...],
-    sigma_z = +(q0/a) n (...) for the tangential one.  Integrating the Flamant kernels
-    (Johnson eqs. 2.15 and 2.19) over the Hertz distribution with scipy.integrate.quad gives
-    the signs above (agreement ~1e-15 at 9 points inside, outside, near an end and deep;
-    the old signs were off by 0.06-0.9 p0).  Independent sanity checks of the corrected
-    signs: on the surface |x| < a the tangential sigma_x is -2 q0 x / a (= -(2/pi) int
-    q(s)/(x - s) ds, the Flamant surface limit); for x > 0 the normal load gives tau_xz < 0
-    like its Flamant kernel -2 P x z^2 / (pi r^4); and tau_xz(normal) = sigma_z(tangential)
-    q0/p0 (reciprocity of the two kernels, -2 x z^2 / (pi r^4) both).
+    SIGN CORRECTIONS.  These formulas also circulate with tau_xz = +(p0/a) n (...) for the
+    normal load and sigma_x = -(q0/a)[...], sigma_z = +(q0/a) n (...) for the tangential one.
+    Integrating the Flamant kernels (Johnson eqs. 2.15 and 2.19) over the Hertz distribution
+    with scipy.integrate.quad gives the signs above (agreement ~1e-15 at 9 points inside,
+    outside, near an end and deep; the other signs are off by 0.06-0.9 p0).  Independent sanity
+    checks of the corrected signs: on the surface |x| < a the tangential sigma_x is -2 q0 x / a
+    (= -(2/pi) int q(s)/(x - s) ds, the Flamant surface limit); for x > 0 the normal load gives
+    tau_xz < 0 like its Flamant kernel -2 P x z^2 / (pi r^4); and tau_xz(normal) =
+    sigma_z(tangential) q0/p0 (reciprocity of the two kernels, -2 x z^2 / (pi r^4) both).
 
     Mapping to this project: sigma_XX = sigma_x, sigma_YY = sigma_z, sigma_XY = -tau_xz,
     and q_J = -q, i.e. q0 = -mu p0.

@@ -43,7 +43,7 @@ F is single valued off [-1, 1] because alpha + beta is an integer), F(x + i0) - 
 
 (the polynomial part of F at infinity).  For alpha = beta = 1/2 this is
 sqrt(z^2 - 1) - z.  (W) is checked against mpmath.quad and against Szego's Jacobi
-function of the second kind (sie-math.md item 3; Szego 1975, sec. 4.61)
+function of the second kind (Szego 1975, sec. 4.61)
 
     int w/(t - x) dt = -2^{alpha+beta+1} B(alpha+1, beta+1)/(x - 1)
                         * 2F1(1, alpha+1; alpha+beta+2; 2/(1 - x)),  x > 1        (Q0)
@@ -154,7 +154,7 @@ def weight_cauchy_szego_mp(alpha, beta, x):
 
 def jacobi_second_kind_cauchy_mp(n, alpha, beta, x):
     """(1/pi) int w P_n^{(alpha,beta)}/(t - x) dt for real x > 1, from Szego's Q_n
-    (sie-math.md item 3): = -(2/pi) (x-1)^alpha (x+1)^beta Q_n(x)."""
+    (Szego 1975, sec. 4.61): = -(2/pi) (x-1)^alpha (x+1)^beta Q_n(x)."""
     alpha, beta, x = mp.mpf(alpha), mp.mpf(beta), mp.mpf(x)
     Q = (2 ** (n + alpha + beta) * mp.gamma(n + alpha + 1) * mp.gamma(n + beta + 1)
          / mp.gamma(2 * n + alpha + beta + 2) * (x - 1) ** (-n - alpha - 1) * (x + 1) ** (-beta)
@@ -739,8 +739,8 @@ class CollinearCracks:
 
     Exact solution (Westergaard's stress function for a row of collinear cracks, Westergaard
     1939; the two-collinear-cracks entry of Tada, Paris & Irwin, The Stress Analysis of Cracks
-    Handbook, 3rd ed. 2000, Part II, and Erdogan 1962 give the same SIFs -- the page was not
-    at hand here, so everything below is derived and then checked numerically in
+    Handbook, 3rd ed. 2000, Part II, and Erdogan 1962 give the same SIFs -- its page is not
+    quoted here: everything below is derived and then checked numerically in
     tests/test_sie_intervals.py::test_reference_collinear_cracks*: the equation by brute-force
     PV, the zero net integrals, the SIFs as lim sqrt(2 pi r) sigma_yy from quadrature of the
     density, and the isolated-crack / single-crack limits): with

@@ -8,10 +8,9 @@ Mechanical Engineering Science 212(4) (1998) 319-328 (DOI 10.1243/09544069815212
 The paper works with the angle phi0 = arcsin(b/a).  Written with the Hills & Nowell
 composite compliance A = 2(1 - nu1^2)/E1 + 2(1 - nu2^2)/E2 (A = 2/E* = -N11 for a rigid
 punch), the load relation derived below is 2 P A R / a^2 = pi - 2 phi0 - sin(2 phi0).  The
-paper's full text was not available when this module was written, so its equation numbers
-and exact printed form are not quoted; the formulas here were derived independently (steps
-in the docstrings) in this library's convention and checked numerically in
-``tests/test_rounded_flat_reference.py``.
+paper's equation numbers and exact printed form are not quoted here: the formulas were
+derived independently (steps in the docstrings) in this library's convention and are checked
+numerically in ``tests/test_rounded_flat_reference.py``.
 
 Problem, in the library's convention (``contact.solver``, static, mu = 0)
 -----------------------------------------------------------------------

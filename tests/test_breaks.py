@@ -243,9 +243,9 @@ def test_two_breaks_second_derivative_jump(left, right, n):
     assert err <= TOL, f"kappa={ref.kappa}, n={n}: {err:.2e}"
 
 
-# regression (kappa = 1 sweep): both interleaved rules once had odd counts on some graded
-# pieces, so both had a node at the piece midpoint and phi was off by a constant ~1e-7
-# (n = 24, 55, 81, 86, 118); the counts now differ by one on every piece.
+# the two interleaved rules must have node counts that differ by one on every graded piece:
+# with odd counts on a piece in both, both put a node at the piece midpoint and phi is off
+# by a constant ~1e-7 (kappa = 1 sweep: n = 24, 55, 81, 86, 118).
 
 
 @pytest.mark.parametrize("left,right", [
@@ -322,8 +322,8 @@ NEAR_END_IDS = [f"kappa={ENDS[c]},x={x:+g}" for c, x, _ in NEAR_END_REFS]
 
 @pytest.mark.parametrize("case,x,want", NEAR_END_REFS, ids=NEAR_END_IDS)
 def test_cauchy_just_outside_an_end_with_breaks(case, x, want):
-    """Pole 1e-3 beyond an end: before commit 1d03e30 (w-rule graded toward +-1 too)
-    the remainder's Cauchy sum was off by 8e-10..5e-8 relative here at n = 48."""
+    """Pole 1e-3 beyond an end: the w-rule must be graded toward +-1 too; without that
+    grading the remainder's Cauchy sum is off by 8e-10..5e-8 relative here at n = 48."""
     ref = reference(*case, "kink")
     got = ref.solve(48).cauchy(np.array([x]))[0]
     assert abs(got - want) <= TOL * max(1.0, abs(want)), f"relative error {abs(got / want - 1):.1e}"

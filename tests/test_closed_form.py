@@ -63,7 +63,18 @@ MAXERR: dict[str, float] = {}
 
 
 def _record(name, err):
+    """Keep the worst error of a kind for the summary printed after the module's tests (each
+    test that records an error also asserts its own bound on it)."""
     MAXERR[name] = max(MAXERR.get(name, 0.0), float(err))
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _print_worst_errors():
+    """After the tests of this module that ran, print the worst error of each kind (run with
+    ``-s`` to see them); not a test: it checks nothing and fails nothing."""
+    yield
+    for k, v in sorted(MAXERR.items()):
+        print(f"[closed-form] max {k}: {v:.2e}")
 
 
 @functools.lru_cache(maxsize=None)
@@ -608,8 +619,3 @@ def test_paper_load_relations_hold():
         assert abs(LOAD - math.pi * c.alpha * c.beta / (-2 * N11 * R) * (a + b) ** 2) < 1e-13
         assert abs(b - c.beta / c.alpha * a) < 1e-14
 
-
-def test_zz_report():
-    """Print the worst measured errors (run with -s)."""
-    for k, v in sorted(MAXERR.items()):
-        print(f"[closed-form] max {k}: {v:.2e}")

@@ -1,14 +1,17 @@
 """Tests for ``contact.constants``: N11, N12, N21, N22 and the Rayleigh speed.
 
-Conventions (paper-errata.md): half-space Y < 0, sigma_YY(X,0) = -p, tau_XY(X,0) = -q,
-Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt,
+Conventions (the documentation, Theory: the contact model and its conventions): half-space
+Y < 0, sigma_YY(X,0) = -p, tau_XY(X,0) = -q, Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt,
 dv/dX = N12 q + N11 Hc[p],  sigma_XX(X,0) = N21 p + N22 Hc[q].
 
 Independent references (the computations live in ``validation/reference_constants.py``,
 shared with the report; none of them calls contact.constants):
-  * classical static isotropic limits (errata file) and moving-isotropic closed forms written
+  * classical static isotropic limits (plane strain: N11 = -(1 - nu)/G, N12 = (1 - 2 nu)/(2G),
+    N21 = -1, N22 = -2) and moving-isotropic closed forms written
     with the Rayleigh function R(c) = 4 a_d a_s - (2 - c^2)^2 (derived by hand, see
     ``isotropic_moving``); the isotropic nu = 1/4 Rayleigh speed sqrt(2 - 2/sqrt(3));
+  * the characteristic roots of the paper's material as printed in its Table 1, and the
+    equations of motion (the 2x2 modal determinant) at every root;
   * a state-space solve at one wavenumber: the 4x4 first-order system for the Fourier
     amplitudes (U, V, tau, sigma) in Y, eigen-decomposed with numpy.linalg.eig (or mpmath.eig
     at 40 digits near a double root), decaying modes kept, unit tractions applied;
@@ -23,6 +26,7 @@ import warnings
 
 import numpy as np
 import pytest
+import mpmath
 from mpmath import mpf
 from scipy.integrate import quad
 from scipy.optimize import brentq
@@ -90,9 +94,11 @@ def test_moving_isotropic_closed_forms_tend_to_static():
 
 
 def test_isotropic_rayleigh_speed_exact():
-    """nu = 1/4: c_R^2 = 2 - 2/sqrt(3) (Rayleigh 1885)."""
+    """nu = 1/4: c_R^2 = 2 - 2/sqrt(3) (Rayleigh 1885), also at 30 digits (within one ulp)."""
     assert rayleigh_speed(ISO) == pytest.approx(math.sqrt(2 - 2 / math.sqrt(3)), rel=3e-16)
-    assert rayleigh_speed(ISO) == pytest.approx(0.9194016867619662, rel=3e-16)
+    with mpmath.workdps(30):
+        exact = mpmath.sqrt(2 - 2 / mpmath.sqrt(3))
+        assert abs(mpf(rayleigh_speed(ISO)) - exact) <= np.spacing(rayleigh_speed(ISO))
 
 
 @pytest.mark.parametrize("nu", [-0.9, -0.3, 0.0, 0.1, 0.3, 0.45, 0.499])
@@ -339,10 +345,64 @@ def test_bad_speed(c, match):
         surface_constants(PAPER, c)
 
 
-def test_values_for_the_report():
-    """Regression values (paper material): signs N11 < 0, N12 > 0, N21 < 0, N22 < 0."""
-    s0, s6 = surface_constants(PAPER, 0.0), surface_constants(PAPER, 0.6)
-    np.testing.assert_allclose(
-        _N(s0), [-0.1192387177, 0.01818693354, -3.213532455, -5.862611509], rtol=1e-9)
-    np.testing.assert_allclose(
-        _N(s6), [-0.1538331022, 0.02466139517, -4.236496032, -6.088791124], rtol=1e-9)
+# ----------------------------------------------------------------------------------------
+# The paper's material: Table 1 and the constants the report tabulates
+# ----------------------------------------------------------------------------------------
+PAPER_TABLE_1 = {   # Zhou, Lee & Jang 2014, Table 1: c -> (eta1, eta2, eta3, eta4) as printed
+    0.0: (5.2506, -5.2506, 0.6120, -0.6120),
+    0.1: (5.2496, -5.2496, 0.6090, -0.6090),
+    0.2: (5.2468, -5.2468, 0.5997, -0.5997),
+    0.3: (5.2421, -5.2421, 0.5839, -0.5839),
+    0.4: (5.2356, -5.2356, 0.5610, -0.5610),
+    0.5: (5.2271, -5.2271, 0.5301, -0.5301),
+    0.6: (5.2168, -5.2168, 0.4897, -0.4897),
+    0.7: (5.2045, -5.2045, 0.4372, -0.4372),
+    0.8: (5.1904, -5.1904, 0.3674, -0.3674),
+    0.9: (5.1743, -5.1743, 0.2669, -0.2669),
+    1.0: (0.0, 0.0, 5.1562, -5.1562),          # the columns are in another order at c = 1
+    1.5: (5.0359, -5.0359, 0.6852j, -0.6852j),
+    2.0: (4.8626, -4.8626, 1.0626j, -1.0626j),
+    10.0: (8.5829j, -8.5829j, 5.8365j, -5.8365j),
+}
+
+
+@pytest.mark.parametrize("c", list(PAPER_TABLE_1))
+def test_paper_table_1_roots(c):
+    """The roots of the paper's material are Table 1's values correctly rounded: each
+    printed root within half a unit of its 4th decimal of a computed one and vice versa (root
+    sets, not columns: the table labels them in another order at c = 1)."""
+    got = PAPER.characteristic_roots(c)
+    printed = np.array(PAPER_TABLE_1[c], dtype=complex)
+    for a, b in ((printed, got), (got, printed)):
+        nearest = np.min(np.abs(a[:, None] - b[None, :]), axis=1)
+        assert np.all(nearest <= 0.5e-4), (c, got, printed)
+
+
+@pytest.mark.parametrize("name", list(EIG_CASES))
+def test_roots_solve_the_equations_of_motion(name):
+    """Every root makes u, v ~ exp(i k X + k eta Y) a solution of the steady equations of
+    motion C11' u_XX + C33 u_YY + K v_XY = 0, K u_XY + C33' v_XX + C22 v_YY = 0
+    (K = C12 + C33, C11' = C11 - C33 c^2, C33' = C33 (1 - c^2)): the 2x2 determinant
+    (C33 eta^2 - C11')(C22 eta^2 - C33') + K^2 eta^2 vanishes to rounding (relative to its
+    largest term), written from the stiffnesses here, not from characteristic_coefficients;
+    real, complex, repeated and imaginary roots (speeds past the limiting one)."""
+    m = EIG_CASES[name][0]
+    K = m.C12 + m.C33
+    for c in (0.0, *EIG_CASES[name][1], 1.0, 1.5, 3.0):
+        C11p, C33p = m.C11 - m.C33 * c * c, m.C33 * (1.0 - c * c)
+        for eta in m.characteristic_roots(c):
+            e2 = eta * eta
+            det = (m.C33 * e2 - C11p) * (m.C22 * e2 - C33p) + K * K * e2
+            scale = (abs(m.C22 * m.C33 * e2 * e2) + abs(m.C33 * C33p * e2)
+                     + abs(m.C22 * C11p * e2) + abs(C11p * C33p) + abs(K * K * e2))
+            assert abs(det) <= 1e-14 * scale, (c, eta, det, scale)
+
+
+@pytest.mark.parametrize("c", [0.0, 0.6])
+def test_paper_constants_of_the_report(c):
+    """The constants the report tabulates (paper material, c = 0 and 0.6): the signs
+    N11 < 0, N12 > 0, N21 < 0, N22 < 0, and every digit against the state-space solution at
+    40 digits (mpmath.eig; it does not call contact.constants)."""
+    N = _N(surface_constants(PAPER, c))
+    assert N[0] < 0 < N[1] and N[2] < 0 and N[3] < 0
+    assert_rel(N, mp_eig_N(PAPER, c), 4e-15)

@@ -47,7 +47,7 @@ def test_event_api():
     assert set(EVENT_KINDS) == {"new zone", "merge", "edge", "split"}
     with pytest.raises(AttributeError):
         e.load = 2.0                                     # frozen
-    assert ZoneState(1.0, (), (), None).events == ()     # the old fields still construct it
+    assert ZoneState(1.0, (), (), None).events == ()     # the four leading fields suffice
 
 
 def test_w_face_curve_merge_then_edges_against_closed_form():

@@ -33,7 +33,7 @@ _XS = np.linspace(-2.0, 2.0, 200)
 
 def _faces():
     return {
-        # the issue's asymmetric bump on the face [-1, 1]
+        # an asymmetric bump on the face [-1, 1]
         "bump": contact.ProfilePunch(lambda X: X / 100 + X * X / 100,
                                      height=lambda X: X * X / 200 + X ** 3 / 300,
                                      face=(-1.0, 1.0)),
@@ -156,7 +156,7 @@ def test_paper_punches_along_a_load_curve_are_the_closed_forms(name, speed):
 
 
 # ----------------------------------------------------------------------------
-# the bump of the issue: contact grows from X = 0 to the whole face
+# the asymmetric bump: contact grows from X = 0 to the whole face
 # ----------------------------------------------------------------------------
 def test_bump_contact_reaches_both_edges_and_becomes_the_flat_punch():
     """At load 100 the bump's contact covers its face [-1, 1] with two corners (index 1): the
@@ -327,7 +327,7 @@ def test_face_cut_at_its_valleys(face):
 
 
 NARROW = {
-    # a cylinder R = 100 with a protrusion 0.12 below its tip at X = 4 (the issue's trial 1)
+    # a cylinder R = 100 with a protrusion 0.12 below its tip at X = 4: first touch there
     "protrusion": contact.ProfilePunch(
         lambda X: X / 100 + 0.8 * (X - 4) * np.exp(-(X - 4) ** 2 / 0.5),
         height=lambda X: X * X / 200 - 0.2 * np.exp(-(X - 4) ** 2 / 0.5)),

@@ -10,9 +10,10 @@ Oracles
 * Exact symmetries: direction +1 is the mirror image of direction -1 for an odd slope, and
   the homogeneity laws of the four punches in the load.
 
-Conventions (``/work/shared/notes/paper-errata.md``): p > 0 compressive, q = mu_f p with
-mu_f = -direction * mu; direction -1 means the punch slides toward -X and its trailing edge is
-the right end. sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p], Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt.
+Conventions (the documentation, Theory: the contact model and its conventions): p > 0
+compressive, q = mu_f p with mu_f = -direction * mu; direction -1 means the punch slides toward
+-X and its trailing edge is the right end. sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p],
+Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt.
 
 Run with ``-s`` to see the measured errors (lines starting with ``[contact]``).
 """
@@ -537,8 +538,8 @@ def test_load_homogeneity(punch_name, power):
     assert worst <= 1e-9
 
 
-# regression: the n-doubling hint (ends at the scaled size) used to start the centre search on
-# the unit contact; at load 1e20 the ends lost 5e-8 and n ran to 1536
+# the n-doubling starts the centre search from the ends at the scaled size (the homogeneity
+# law), not from the unit contact: from there, at load 1e20 the ends lose 5e-8 and n runs to 1536
 def test_adaptive_cylindrical_large_load_keeps_accuracy():
     punch = PUNCHES["cylindrical"]()
     for load in (1e12, 1e20):
@@ -643,7 +644,7 @@ def test_flat_sigma_xx_trailing_tensile_leading_compressive():
     # the same all along the outside, both sides (not only next to the edges)
     X_right = a * np.array([1.001, 1.01, 1.1, 1.5, 3.0, 10.0])
     assert np.all(r.sigma_xx(X_right) > 0) and np.all(r.sigma_xx(-X_right) < 0)
-    # direction +1: everything mirrors, the trailing edge is now X = -a
+    # direction +1: everything mirrors, the trailing edge is then X = -a
     r2 = contact.solve(MAT, contact.FlatPunch(a), load=LOAD, speed=0.6, friction=0.3,
                        direction=+1)
     assert np.all(r2.sigma_xx(-X_right) > 0) and np.all(r2.sigma_xx(X_right) < 0)

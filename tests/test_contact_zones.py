@@ -240,8 +240,8 @@ def test_w_face_with_friction_against_the_independent_bem():
     assert np.allclose([(z.c, z.d) for z in zs], ref.zones, rtol=0, atol=2e-5)
 
 
-# The cases a new user's trial found (issue "contact 2"); the old single-zone search returned a
-# zone next to X = 0 (penetrating elsewhere) or raised from its end search.
+# Faces where a search for a single zone goes wrong: it returns a zone next to X = 0
+# (penetrating elsewhere) or fails in its end search.
 TRIAL_FACES = {
     # cylinder R = 100 with a protrusion 0.12 below the tip at X = 4: first touch there
     "protrusion": (lambda X: X / 100 + 0.8 * (X - 4) * np.exp(-(X - 4) ** 2 / 0.5),

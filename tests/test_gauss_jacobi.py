@@ -11,7 +11,7 @@ in mpmath / exact integer arithmetic (see ``_mpref.py`` for the formulas and
 their sources: DLMF 18.9.2 recurrence, DLMF 18.9.16 = Szegő (4.5.7)
 derivative, Szegő (15.3.5) Christoffel numbers, DLMF 5.12.1 Beta integral).
 
-Requirements covered (numbers refer to the project issue):
+Requirements covered:
   0. the reference itself                        test_reference_*
   1. nodes/weights vs. mpmath reference        test_nodes_*, test_weights_*,
                                                  test_chebyshev_rules_match_closed_form
@@ -49,7 +49,7 @@ except ImportError:                    # pragma: no cover - if tests/ becomes a 
 
 
 # ---------------------------------------------------------------------------
-# tolerances (from the issue; do not loosen)
+# tolerances (the accuracy requirements; do not loosen)
 # ---------------------------------------------------------------------------
 NODE_ABS_TOL = 1e-14        # |x_lib - x_ref|
 WEIGHT_REL_TOL = 1e-13      # |w_lib - w_ref| / w_ref
@@ -318,7 +318,7 @@ def test_polynomial_exactness(n, alpha, beta):
 
 
 # ---------------------------------------------------------------------------
-# 3b. extreme exponents (regressions found in review)
+# 3b. extreme exponents (each case defeats a plain version of some rung)
 # ---------------------------------------------------------------------------
 EXTREME_CASES = [
     # exponent within 1e-8..1e-12 of -1 on the asymptotic rung: the Gatteschi-Pittaluga start
@@ -331,8 +331,8 @@ EXTREME_CASES = [
     # a Golub-Welsch eigenvalue at or beyond -1 (angle 0 start; the node is within one
     # double spacing of -1)
     (200, 7.0, -1.0 + 1e-14), (400, 7.0, -1.0 + 1e-12),
-    # large exponents where the dd series stopped at a point of its own noise that is no root
-    # (the nodes were not ascending; found by a random search over exponents up to 500)
+    # large exponents where the dd series can stop at a point of its own noise that is no root
+    # (the nodes then come out not ascending; found by a random search over exponents <= 500)
     (896, 9.717318491045363, 55.780305189519034), (88, 112.03049493219392, 6.355986612205065),
     (304, 0.6039799211475647, 200.95055405006207), (99, 429.85777933720095, 35.3937981072577),
 ]
@@ -351,9 +351,8 @@ def test_extreme_exponents_match_mpmath_reference(n, alpha, beta):
 # ---------------------------------------------------------------------------
 # 3c. large exponents (max(alpha, beta) > 5: the O(n^2) rung for every n)
 # ---------------------------------------------------------------------------
-# Before the fix the recurrence normalised at the end cancelled like n^max / max!: these
-# cases warned "the weights may be off by up to ~4e-9 .. 2e-6" or raised FloatingPointError
-# ("lost all accuracy") -- and the nodes, not named in the warning, were off too (1.5e-9 at
+# A recurrence normalised at the end cancels like n^max / max!: in these cases it leaves the
+# weights off by ~4e-9 .. 2e-6 or loses all accuracy, and the nodes are off too (1.5e-9 at
 # n = 200, alpha = 20, where scipy.special.roots_jacobi has 2e-16).
 LARGE_EXPONENT_CASES = [(200, 20.0, 0.0), (200, 0.0, 20.0), (1000, 10.0, -0.5), (300, 12.0, -0.5),
                         (300, 15.0, 0.0), (1000, 20.0, 0.0), (1000, 0.0, 15.0),
@@ -362,8 +361,8 @@ LARGE_EXPONENT_CASES = [(200, 20.0, 0.0), (200, 0.0, 20.0), (1000, 10.0, -0.5), 
 
 @pytest.mark.parametrize("n,alpha,beta", LARGE_EXPONENT_CASES, ids=[_pid(*c) for c in LARGE_EXPONENT_CASES])
 def test_large_exponents_match_mpmath_reference_without_warning(n, alpha, beta):
-    """test_large_exponent_nodes_n200_alpha20 and the cases that used to warn or raise:
-    nodes and weights to the same tolerances as everywhere else, and no warning."""
+    """The cases above, where a recurrence normalised at the end loses accuracy: nodes and
+    weights to the same tolerances as everywhere else, and no warning."""
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         gauss_jacobi_cached(n, alpha, beta)
@@ -375,8 +374,8 @@ def test_large_exponents_match_mpmath_reference_without_warning(n, alpha, beta):
 
 
 def test_large_exponent_nodes_n200_alpha20():
-    """The user's report: at n = 200, (alpha, beta) = (20, 0) the nodes were 1.5e-9 off (the
-    weights 1.1e-6) while the warning spoke of weights only.  Now both to ~1 ulp."""
+    """n = 200, (alpha, beta) = (20, 0): nodes to ~1 ulp and weights to 2e-14 (a recurrence
+    normalised at the end leaves the nodes 1.5e-9 and the weights 1.1e-6 off here)."""
     c = comparison(200, 20.0, 0.0)
     assert c.node_err.max() <= 1e-15, c.worst(c.node_err)
     assert c.weight_err.max() <= 2e-14, c.worst(c.weight_err)
@@ -403,10 +402,9 @@ def test_large_exponents_reflection(n, alpha, beta):
 
 
 def test_large_n_with_large_exponent_is_refused_fast():
-    """The user's report: gauss_jacobi(100_000, -0.999999, 20.0) worked 280 s in the O(n^2)
-    rung and then raised FloatingPointError.  Now refused up front (InvalidOrderError, a
-    ValueError), with a message that says what n and exponents are, what would be lost (time,
-    not accuracy) and what is allowed."""
+    """gauss_jacobi(100_000, -0.999999, 20.0) would work ~280 s in the O(n^2) rung: it is
+    refused up front (InvalidOrderError, a ValueError), with a message that says what n and
+    exponents are, what would be lost (time, not accuracy) and what is allowed."""
     t0 = time.perf_counter()
     with pytest.raises(sie.errors.InvalidOrderError) as info:
         sie.gauss_jacobi(100_000, -0.999999, 20.0)
@@ -588,7 +586,8 @@ def test_large_n_is_finite_ordered_positive(alpha, beta):
 
 @pytest.mark.slow
 def test_large_n_end_nodes_match_mpmath_reference():
-    """Beyond the issue's n <= 1e4: the 6 nodes at each end for n = 10^5, same tolerances."""
+    """Beyond the n <= 1e4 of the accuracy requirements: the 6 nodes at each end for
+    n = 10^5, same tolerances."""
     n, alpha, beta = 100_000, -0.99, 0.99
     x, w = gauss_jacobi_cached(n, alpha, beta)
     index = list(range(6)) + list(range(n - 6, n))

@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
@@ -182,3 +183,15 @@ def test_contact_length_power_laws(kind, c, mu, d, lam):
     L = r2.ends[1] - r2.ends[0]
     assert abs(r2.ends[1] - scale * r1.ends[1]) <= 1e-12 * L
     assert abs(r2.ends[0] - scale * r1.ends[0]) <= 1e-12 * L
+
+
+@pytest.mark.parametrize("args, error", [
+    ((0.0, 0.0, "bounded", "bounded"), sie.InvalidCoefficientError),        # b = 0: no SIE
+    ((float("nan"), 1.0, "bounded", "bounded"), sie.InvalidCoefficientError),
+    ((1.0, float("inf"), "bounded", "bounded"), sie.InvalidCoefficientError),
+    ((0.3, 1.0, "free", "bounded"), sie.InvalidEndConditionError),
+    ((0.3, 1.0, "bounded", None), sie.InvalidEndConditionError),
+])
+def test_sie_exponents_refuses_bad_input(args, error):
+    with pytest.raises(error):
+        sie.sie_exponents(*args)

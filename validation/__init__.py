@@ -1,1 +1,1 @@
-"""validation: demos, benchmarks and (later, issue 6) scenes and the report."""
+"""validation: demos, benchmarks, scenes and the report."""

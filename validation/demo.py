@@ -1,10 +1,10 @@
-"""Main job of ``make run`` for now: a manufactured SIE of each index, solved and checked.
+"""A manufactured SIE of each index, solved and checked (``python -m validation.demo``).
 
 For each index kappa in {1, 0, -1} we pick phi(s) = exp(s)/(3 - s), build f from
 the exact Cauchy transform of the Jacobi basis (Erdogan-Gupta-Cook identity,
 applied to a high-degree Jacobi expansion of phi computed independently by
 Gauss-Jacobi projection), solve with increasing n and print the error in phi
-and the time per solve.  (Issue 6 replaces this with the default contact scene.)
+and the time per solve.  (``make run`` runs the default contact scene instead.)
 """
 from __future__ import annotations
 

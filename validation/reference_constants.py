@@ -16,8 +16,9 @@ against and the report (section 2) tabulates; none of them calls :mod:`contact.c
 * **Rayleigh speed** as the root of Delta(c) at 40 digits (:func:`rayleigh_mp`) and as the
   sign change of 1/N11 of the state-space route (:func:`rayleigh_eig`).
 
-Conventions (paper-errata.md): half-space Y < 0, sigma_YY(X,0) = -p, tau_XY(X,0) = -q,
-Hc[f](x) = (1/pi) PV int f(t)/(t - x) dt (Fourier multiplier +i sgn k),
+Conventions (the documentation, Theory: the contact model and its conventions): half-space
+Y < 0, sigma_YY(X,0) = -p, tau_XY(X,0) = -q, Hc[f](x) = (1/pi) PV int f(t)/(t - x) dt (Fourier
+multiplier +i sgn k),
 dv/dX = N12 q + N11 Hc[p],  sigma_XX(X,0) = N21 p + N22 Hc[q].
 """
 from __future__ import annotations

@@ -7,7 +7,8 @@ them; DIR defaults to ``validation/report/``.  ``--quick`` runs every section on
 (small n, fewer speeds and frictions; the test suite's smoke build); the full build takes a few
 minutes on 2 cores.
 
-Sections (Zhou, Lee & Jang, Arch. Mech. 66 (2014); errata in /work/shared/notes/paper-errata.md):
+Sections (Zhou, Lee & Jang, Arch. Mech. 66 (2014); errata: see the documentation, Theory: errata
+of Zhou et al. 2014):
  1. Table 1 beside the printed values          (validation/report_paper.py)
  2. kernel constants three ways, c_R           (validation/report_paper.py, reference_constants.py)
  3. Figures 1-4 reproduced, printed vs corrected (validation/report_paper.py)

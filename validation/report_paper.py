@@ -1,8 +1,8 @@
 """Report sections that face the paper: Table 1 (section 1), the kernel constants (section 2),
 Figures 1-4 (section 3) and the Sec. 6 claims (section 8).
 
-Zhou, Lee & Jang, Arch. Mech. 66 (2014); the corrections are those of
-``/work/shared/notes/paper-errata.md`` and ``contact/closed_form.py``.
+Zhou, Lee & Jang, Arch. Mech. 66 (2014); the corrections are those of the documentation
+(Theory: errata of Zhou et al. 2014) and of ``contact/closed_form.py``.
 """
 from __future__ import annotations
 

@@ -1,0 +1,66 @@
+"""The documentation builds: Sphinx with warnings as errors (gallery not executed here; ``make
+docs`` executes it), every public name has its API page, and the examples in the pages run."""
+from __future__ import annotations
+
+import doctest
+import py_compile
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import contact
+import sie
+
+DOCS = Path(__file__).resolve().parents[1] / "docs"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    """The site built from a copy of docs/ (the build writes generated pages beside its
+    sources), with the gallery's scripts listed but not run."""
+    pytest.importorskip("sphinx")
+    src = tmp_path_factory.mktemp("docs") / "docs"
+    shutil.copytree(DOCS, src, ignore=shutil.ignore_patterns("_build", "auto_examples",
+                                                            "generated"))
+    out = src / "_build" / "html"
+    proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b",
+                           "html", "-D", "plot_gallery=0", str(src), str(out)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-6000:]
+    return out
+
+
+def test_every_public_name_has_an_api_page(built):
+    missing = [f"{mod.__name__}.{name}" for mod in (sie, contact) for name in mod.__all__
+               if not (built / "api" / "generated" / f"{mod.__name__}.{name}.html").exists()
+               and f'id="{mod.__name__}.{name}"' not in
+               (built / "api" / f"{mod.__name__}.html").read_text(encoding="utf-8")]
+    assert missing == []
+
+
+def test_theory_and_gallery_pages_exist(built):
+    for page in ("index.html", "theory/sie.html", "theory/contact.html", "theory/errata.html",
+                 "auto_examples/index.html", "validation.html"):
+        assert (built / page).is_file(), page
+    sie_page = (built / "theory" / "sie.html").read_text(encoding="utf-8")
+    assert "P_{k-\\kappa}^{(-\\alpha,-\\beta)}" in sie_page      # the equations reach MathJax
+    assert (built / "_static" / "mathjax").is_dir()          # served with the site (offline)
+
+
+def test_gallery_scripts_compile():
+    scripts = sorted((DOCS / "examples").glob("plot_*.py"))
+    assert len(scripts) >= 9
+    for path in scripts:
+        py_compile.compile(str(path), doraise=True)
+
+
+def test_examples_in_the_pages_run():
+    for page in sorted(DOCS.rglob("*.rst")):
+        if "_build" in page.parts or "generated" in page.parts:
+            continue
+        failed, _ = doctest.testfile(str(page), module_relative=False,
+                                     optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+        assert failed == 0, page
