@@ -1,5 +1,5 @@
 """Chunked execution of a scene's cases (contact.scene.batch): chunk sizes, grouping by
-(material, speed), scene order and per-case errors through a process pool and a Dask
+material, scene order and per-case errors through a process pool and a Dask
 cluster, results identical to a serial run.  (Streaming -- results in order as they complete,
 a bounded window, bounded memory -- is tested in test_scene_stream.py.)"""
 from __future__ import annotations
@@ -30,8 +30,10 @@ def double_or_fail(case):
 
 
 def test_chunk_size_targets_the_time_and_the_balance():
-    # 1 ms per case: 50 per chunk by time; 1000 cases on 2 workers allow 125 by balance
-    assert batch.chunk_size(1000, 2, 1e-3) == 50
+    # 1 ms per case: TARGET_CHUNK_S / 1 ms per chunk by time, for a long sweep
+    assert batch.chunk_size(10**6, 2, 1e-3) == int(batch.TARGET_CHUNK_S / 1e-3)
+    # 1000 cases on 2 workers allow 125 by balance (CHUNKS_PER_WORKER = 4)
+    assert batch.chunk_size(1000, 2, 1e-3) == min(125, int(batch.TARGET_CHUNK_S / 1e-3))
     # a slow case: one per chunk
     assert batch.chunk_size(1000, 2, 1.0) == 1
     # few cases: at least CHUNKS_PER_WORKER chunks per worker
@@ -49,21 +51,19 @@ def indices(chunks):
     return [[c.index for c in chunk] for chunk in chunks]
 
 
-def test_chunks_share_material_and_speed():
+def test_chunks_share_the_material_in_scene_order():
     cases = fake_cases(10, speeds=(0.0, 0.3))
     chunks = sorted(chunked(cases, 3), key=lambda ch: ch[0].index)
-    assert [c.index for ch in chunks for c in ch] == list(range(10))
-    assert all(len({(c.material, c.speed) for c in ch}) == 1 for ch in chunks)
-    assert [len(ch) for ch in chunks] == [3, 2, 3, 2]       # a chunk ends where the speed changes
-    # speed varying fastest (friction swept first): still full chunks of one speed
-    mixed = [FakeCase(i, "m", (0.0, 0.3)[i % 2], {}) for i in range(10)]
+    assert indices(chunks) == [[0, 1, 2], [3, 4, 5], [6, 7, 8], [9]]   # across the speeds
+    # two materials interleaved: each chunk holds one, in scene order within it
+    mixed = [FakeCase(i, ("m1", "m2")[i % 2], 0.0, {}) for i in range(10)]
     assert indices(chunked(mixed, 3)) == [[0, 2, 4], [1, 3, 5], [6, 8], [7, 9]]
 
 
 def test_a_rare_key_is_cut_once_it_lags():
-    """Case 0 alone at its speed: its chunk is handed out once the newest case read is
+    """Case 0 alone with its material: its chunk is handed out once the newest case read is
     ``lag`` cases after it, not at the end."""
-    cases = [FakeCase(0, "m", 0.9, {})] + [FakeCase(i, "m", 0.3, {}) for i in range(1, 9)]
+    cases = [FakeCase(0, "x", 0.3, {})] + [FakeCase(i, "m", 0.3, {}) for i in range(1, 9)]
     chunker = batch.Chunker(3, 4)
     out = [indices(chunker.add(case)) for case in cases]
     assert out == [[], [], [], [[1, 2, 3]], [[0]], [], [[4, 5, 6]], [], []]
@@ -180,3 +180,26 @@ def test_separate_scheduler_and_worker_processes(tmp_path):
 def _plain(o):
     import numpy as np
     return o.tolist() if isinstance(o, np.ndarray) else float(o)
+
+
+class _InlineExecutor:
+    """An executor that runs each task at submit: every chunk is done before it is awaited."""
+    _max_workers = 2
+
+    def submit(self, fn, *args):
+        from concurrent.futures import Future
+        fut = Future()
+        fut.set_result(fn(*args))
+        return fut
+
+
+def test_every_case_delivered_when_the_window_empties_at_once(monkeypatch):
+    """All cases read so far delivered in one go (every chunk already done): reading goes on
+    to the end of the sweep instead of stopping at the first window."""
+    monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
+    monkeypatch.setattr(batch, "CHUNKS_AHEAD", 1)
+    cases = fake_cases(100, speeds=(0.0,))
+    got = list(batch.iter_chunked(lambda c: c.index, iter(cases), _InlineExecutor(),
+                                  lambda k: None, 100))
+    assert [c.index for c, _ in got] == list(range(100))
+    assert all(res == c.index for c, res in got)

@@ -1,11 +1,14 @@
 """Running a scene's cases in chunks: in this process, in a process pool or on a Dask cluster.
 
 One task per case costs more than the case when the case is cheap (a cylindrical punch solves
-in ~0.5 ms; a Dask task costs about that much to schedule, a process-pool task ~0.1 ms plus
-pickling).  Cases therefore travel in chunks:
+in ~0.5 ms; a Dask task costs 5-25 ms of CPU between the scheduler, the client and the worker
+on a loaded 2-core machine, a process-pool task ~0.1 ms plus pickling).  Cases therefore
+travel in chunks:
 
-* grouped by (material, speed), so that a chunk shares the surface constants
-  (:func:`contact.scene.run._shared_constants`, cached per process);
+* of one material, in scene order: each worker computes the surface constants of a speed
+  once and keeps them (:func:`contact.scene.run._shared_constants`, cached per process), so a
+  chunk need not be cut where the speed changes (cut there, a sweep whose inner key is the
+  friction would make chunks no longer than one speed's cases, whatever their cost);
 * sized to the work: a chunk holds about ``TARGET_CHUNK_S`` of solving, estimated from the
   first cases (solved in this process first), and there are at least ``CHUNKS_PER_WORKER``
   chunks per worker so that a slow chunk does not leave the others idle;
@@ -14,9 +17,9 @@ pickling).  Cases therefore travel in chunks:
 Cases are read from an iterator as they are needed and their results come back in its order
 (:func:`iter_chunked`), so that a sweep runs in memory that does not grow with its length: at
 most ``CHUNKS_AHEAD`` full chunks per worker are read past the first case not yet delivered
-(those running, and those done early that wait for it), and a group of cases sharing
-(material, speed) is cut into a chunk when it is full or when its first case is half that
-window behind the newest case read (:class:`Chunker`).
+(those running, and those done early that wait for it), and a group of cases of one material
+is cut into a chunk when it is full or when its first case is half that window behind the
+newest case read (:class:`Chunker`).
 
 A case that fails in the library comes back as its exception; the results stop after the first
 one in scene order, and the chunks after it are cancelled, so that the caller can raise it (a
@@ -31,8 +34,9 @@ import math
 import time
 from concurrent.futures import FIRST_COMPLETED, wait
 
-#: Seconds of solving a chunk aims at (tens of milliseconds: well above a task's overhead).
-TARGET_CHUNK_S = 0.05
+#: Seconds of solving a chunk aims at: well above a Dask task's overhead (measured: 0.05 s
+#: chunks put a LocalCluster 1.2-1.4x behind a process pool on 2 cores, 0.2 s 1.1-1.25x).
+TARGET_CHUNK_S = 0.2
 #: At least this many chunks per worker, for balance.
 CHUNKS_PER_WORKER = 4
 #: Full chunks per worker read past the first case not yet delivered.
@@ -83,8 +87,8 @@ def chunk_size(n_cases, workers, seconds_per_case):
 
 
 class Chunker:
-    """Cases grouped by (material, speed) as they are read, handed out as chunks in scene order
-    within each: a group when it holds ``size`` cases, or when its first case is ``lag`` cases
+    """Cases grouped by material as they are read, handed out as chunks in scene order within
+    each: a group when it holds ``size`` cases, or when its first case is ``lag`` cases
     behind the newest one read (so that a case whose key is rare does not wait for others of
     its key while the cases after it are solved)."""
 
@@ -95,7 +99,7 @@ class Chunker:
 
     def add(self, case) -> list:
         """The chunks ready once ``case`` is read."""
-        key = (case.material, case.speed)
+        key = case.material
         if key not in self._groups:
             self._groups[key] = (self._read, [])
         group = self._groups[key][1]
@@ -137,7 +141,7 @@ def iter_chunked(fn, cases, executor, on_done, total: int):
 
     ``executor`` None (or fewer than two cases): every case here, one after the other.
     Otherwise the first three cases run here (the fastest sizes the chunks: :func:`chunk_size`
-    for the ``total`` cases), the rest go to ``executor`` in chunks of one (material, speed)
+    for the ``total`` cases), the rest go to ``executor`` in chunks of one material
     (:class:`Chunker`), at most ``CHUNKS_AHEAD`` full chunks per worker read past the first
     case not yet delivered.  Once a case fails, the chunks after it are cancelled and those
     before it awaited.  ``on_done(k)`` is called as k cases finish.
@@ -204,6 +208,8 @@ def _windowed(fn, cases, executor, size, ahead, on_done):
                 if isinstance(res, Exception):
                     return
             if not waiting:
+                if unread and failed == math.inf:
+                    continue                # all read so far delivered: read on
                 return
             done, _ = wait(running, return_when=FIRST_COMPLETED)
             for fut in done:

@@ -388,12 +388,14 @@ class SceneRun:
         per_speed = any(name in SPEED_FIELDS for name in self.scene.fields)
         t0 = time.perf_counter()
         bar = _progress_bar(self.count, self._progress)
+        delivered = 0
         try:
             for case, res in iter_chunked(run_case, self.scene.iter_cases(), self._executor,
                                           bar.update, self.count):
                 if isinstance(res, Exception):
                     with _naming(case, self.scene):
                         raise res
+                delivered += 1
                 if per_speed:
                     res.entry = _with_speed_fields(res.entry, self._speed_fields(case.speed),
                                                    self.scene.fields)
@@ -403,6 +405,9 @@ class SceneRun:
                 t0 = None                          # the consumer's time is not the run's
                 yield res
                 t0 = time.perf_counter()
+            if delivered != self.count:            # a sweep is never cut short silently
+                raise RuntimeError(f"{self.scene.source}: {delivered} of {self.count} cases "
+                                   "came back from the runner; please report")
         finally:
             bar.close()
             if t0 is not None:
