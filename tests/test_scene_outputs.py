@@ -24,7 +24,8 @@ import pytest
 import contact
 from contact import cli
 from contact.scene import parse_scene_text, run_scene
-from contact.scene.output import MAX_CURVES, _writing_bar
+from contact.scene.figures import MAX_CURVES
+from contact.scene.output import _writing_bar
 from contact.scene.spec import clean_linspace
 
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
@@ -363,7 +364,7 @@ def test_figures_of_a_long_sweep_are_a_coloured_family_and_fast(tmp_path):
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
 
-    from contact.scene.output import _shown_cases, _write_curve_figures, curve_figure
+    from contact.scene.figures import _shown_cases, _write_curve_figures, curve_figure
     speeds = ", ".join(f"{0.05 * k:.2f}" for k in range(10))
     frictions = ", ".join(f"{0.02 * k:.2f}" for k in range(25))
     s = parse_scene_text(CYLINDER_SWEEP.replace("[0.3, 0.6]", f"[{speeds}]")

@@ -30,7 +30,8 @@ from contact.scene import (CaseError, SceneWriter, format_table, iter_scene, par
                            run_scene)
 from contact.scene import batch, output
 from contact.scene import run as run_module
-from contact.scene.output import TABLE_ROWS, dumps_json
+from contact.scene.output import dumps_json
+from contact.scene.summary import TABLE_ROWS
 
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
 

@@ -22,7 +22,7 @@ import contact
 from contact import cli
 from contact.scene import (FIELDS, SceneError, format_table, load_scene, parse_scene_text,
                            run_scene, write_outputs)
-from contact.scene.output import SUBSURFACE_PANELS, _subsurface_shown
+from contact.scene.figures import SUBSURFACE_PANELS, _subsurface_shown
 
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
 HERTZ = SCENES / "subsurface_hertz.toml"

@@ -162,7 +162,8 @@ file, the key and what is allowed, raised by :func:`load_scene` before anything 
 """
 from __future__ import annotations
 
-from .output import SceneWriter, check_out_dir, format_table, write_outputs
+from .output import SceneWriter, check_out_dir, write_outputs
+from .summary import format_table
 from .parse import default_scene, load_scene, parse_scene_text
 from .run import CaseResult, SceneResult, SceneRun, SubsurfaceMap, iter_scene, run_case, run_scene
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,

@@ -25,7 +25,7 @@ print(f"frictionless: max shear {e.max_shear.value / p0:.6f} p0 at depth {e.max_
 
 # %%
 # Maps of the maximum shear stress at three friction coefficients.
-fig, axes = plt.subplots(1, 3, figsize=(11, 3.4), sharey=True)
+fig, axes = plt.subplots(1, 3, figsize=(11, 3.8), sharey=True, layout="constrained")
 for ax, mu in zip(axes, (0.0, 0.2, 0.45)):
     r = contact.solve(mat, punch, load=0.01, speed=0.0, friction=mu)
     a, p0 = r.half_width, np.max(r.pressure(np.linspace(*r.ends, 201)[1:-1]))
@@ -39,7 +39,8 @@ for ax, mu in zip(axes, (0.0, 0.2, 0.45)):
                  fontsize=9)
     ax.set_xlabel("X / a")
 axes[0].set_ylabel("Y / a")
-fig.colorbar(cs, ax=axes, label="max shear / p_max")
+fig.colorbar(cs, ax=axes, label="max shear / p_max", shrink=0.9)
+plt.show()
 
 # %%
 # The depth of the maximum against the friction coefficient: it reaches the surface at mu*.

@@ -1,0 +1,206 @@
+"""The console table of ``contact run``: one row per case for a short sweep; for a long one the
+first and the last cases and the smallest and largest value of each column over every case
+(:class:`TableSummary`, fed case by case)."""
+from __future__ import annotations
+
+import collections
+import math
+
+import numpy as np
+
+import contact
+
+from .run import CaseResult, SceneResult, _inputs_text
+from .spec import SUBSURFACE_CUT, Scene, _fmt
+
+#: The printed table shows every case of a sweep of at most this many; a longer one shows the
+#: first and the last TABLE_ROWS // 2, and the smallest and largest value of each column over
+#: every case.
+TABLE_ROWS = 40
+
+
+def format_table(result: SceneResult) -> str:
+    """A short text table: a row per case (the first and the last TABLE_ROWS // 2 of a longer
+    sweep, then each column's smallest and largest value over every case) with its swept
+    inputs, ends, exponents, peak pressure, SIFs and sigma_XX extremes (what was requested),
+    the solver's check (the larger of its residual and load check) and the time taken.
+
+    When a case has several contact zones, a ``zones`` column gives their number, and the ends,
+    exponents and SIFs shown are those of the outer ends (result.json lists every zone)."""
+    summary = TableSummary(result.scene, len(result.cases))
+    for res in result.cases:
+        summary.add(res)
+    return summary.text(result.timing_s)
+
+
+class TableSummary:
+    """The printed table (:func:`format_table`) built one case at a time: it keeps the rows
+    shown (all up to TABLE_ROWS cases, else the first and the last TABLE_ROWS // 2), each
+    column's extremes over every case, and what the notes under the table depend on.
+
+    Parameters
+    ----------
+    scene : Scene
+    count : int
+        How many cases will be added.
+    """
+
+    def __init__(self, scene: Scene, count: int):
+        self.scene, self.count = scene, count
+        swept = [key for _, key in scene.sweep]
+        if "velocity" in swept:
+            swept.append("speed")
+        self._swept = swept
+        self._outer = ("ends" in scene.fields or "zones" in scene.fields,
+                       "exponents" in scene.fields, "sif" in scene.fields)
+        self._columns = dict.fromkeys(["case"] + swept)
+        self._head = []
+        self._tail = collections.deque(maxlen=TABLE_ROWS // 2)
+        self._lowest, self._highest = {}, {}          # column -> (value, cell)
+        self._first_inputs = None
+        self._added = 0
+        self._other_than_one_zone = self._several_zones = False
+        self._free_end = self._cut = False
+
+    def add(self, res: CaseResult) -> None:
+        """The next case, in scene order."""
+        row = _table_row(res, self._swept, self._outer)
+        if self._first_inputs is None:
+            self._first_inputs = res.entry["inputs"]
+        self._columns.update(dict.fromkeys(row))
+        self._other_than_one_zone |= len(res.zones) != 1
+        self._several_zones |= len(res.zones) > 1
+        self._free_end |= row.get("K_left") == "-" or row.get("K_right") == "-"
+        self._cut |= _cut_below_surface(res.entry)
+        for key, cell in row.items():
+            self._extremes(key, cell)
+        if self._added < TABLE_ROWS // 2 or self.count <= TABLE_ROWS:
+            self._head.append(row)
+        else:
+            self._tail.append(row)
+        self._added += 1
+
+    def _extremes(self, key: str, cell: str) -> None:
+        """Keep ``cell`` as its column's smallest or largest when it is (cells that are not
+        a finite number are passed over)."""
+        try:
+            value = float(cell)
+        except ValueError:
+            return
+        if key == "case" or not math.isfinite(value):
+            return
+        if key not in self._lowest or value < self._lowest[key][0]:
+            self._lowest[key] = (value, cell)
+        if key not in self._highest or value > self._highest[key][0]:
+            self._highest[key] = (value, cell)
+
+    def text(self, timing_s: float) -> str:
+        """The table of the cases added, with its notes and the run's time."""
+        scene = self.scene
+        mat = scene.material
+        c_R = contact.rayleigh_speed(mat.build())
+        head = [scene.title,
+                f"  scene: {scene.source}",
+                f"  material: {mat.preset or 'custom'} (C11, C12, C22, C33 = {mat.C11:.10g}, "
+                f"{mat.C12:.10g}, {mat.C22:.10g}, {mat.C33:.10g}); Rayleigh speed c_R = "
+                f"{c_R:.10f}",
+                f"  fixed inputs: {_inputs_text(_fixed_inputs(scene, self._first_inputs or {}))}"]
+        columns = [k for k in self._columns
+                   if k != "time ms" and (k != "zones" or self._other_than_one_zone)]
+        columns.append("time ms")
+        omitted = self._added - len(self._head) - len(self._tail)
+        extremes = []
+        if omitted:
+            extremes = [{"case": "min", **{k: c for k, (_, c) in self._lowest.items()}},
+                        {"case": "max", **{k: c for k, (_, c) in self._highest.items()}}]
+        shown = self._head + list(self._tail) + extremes
+        widths = {k: max(len(k), *(len(r.get(k, "")) for r in shown)) for k in columns}
+
+        def line(row):
+            return "  " + "  ".join(f"{row.get(k, ''):>{widths[k]}}" for k in columns)
+
+        lines = head + ["", "  " + "  ".join(f"{k:>{widths[k]}}" for k in columns)]
+        lines += [line(r) for r in self._head]
+        if omitted:
+            lines.append(line({"case": "..."}).rstrip())
+            lines += [line(r) for r in list(self._tail) + extremes]
+            lines.append(f"  ({omitted} of {self._added} cases not shown; min, max: each "
+                         "column's smallest and largest value over every case; sweep.csv has "
+                         "every case)")
+        if "sif" in scene.fields and self._free_end:
+            lines.append("  (SIF '-': that contact end is free, the pressure vanishes there)")
+        if self._cut:
+            lines.append(f"  (max shear with a corner on the surface: searched below Y = "
+                         f"-{SUBSURFACE_CUT:g} a, the stresses being unbounded at the corner; "
+                         "result.json gives the region)")
+        if "check" in columns:
+            lines.append("  (check: the larger of the solver's relative residual and load "
+                         "check; result.json and sweep.csv give n, residual and load_check)")
+        if self._several_zones:
+            lines.append("  (several zones: x_left, x_right, alpha, beta, K_left, K_right are "
+                         "those of the outer ends; result.json lists every zone)")
+        lines.append(f"  total time {timing_s:.3f} s for {self._added} case(s); units as "
+                     "in the scene (stresses in the stiffness unit, lengths in the punch's "
+                     "unit)")
+        return "\n".join(lines)
+
+
+def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
+    """A case's cells in the printed table (the ``zones`` column always: the table drops it
+    when every case has one zone)."""
+    e = res.entry
+    row = {"case": str(res.index)}
+    row.update({k: _fmt(e["inputs"][k]) for k in swept})
+    row["zones"] = str(len(res.zones))
+    zones = e.get("zones") if len(res.zones) > 1 else None
+    if "ends" in e:
+        row["x_left"], row["x_right"] = (f"{x:.10g}" for x in e["ends"])
+    elif zones and outer[0]:
+        row["x_left"], row["x_right"] = (f"{x:.10g}" for x in
+                                         (zones[0]["ends"][0], zones[-1]["ends"][1]))
+    if "exponents" in e:
+        row["alpha"] = f"{e['exponents']['right']:.8g}"
+        row["beta"] = f"{e['exponents']['left']:.8g}"
+    elif zones and outer[1]:
+        row["alpha"] = f"{zones[-1]['exponents']['right']:.8g}"
+        row["beta"] = f"{zones[0]['exponents']['left']:.8g}"
+    if "pressure" in e:
+        row["max p (sampled)"] = _extreme(e["pressure"]["values"], np.nanmax)
+    sif = e.get("sif")
+    if sif is None and zones and outer[2]:
+        sif = {k: v for k, v in (("left", zones[0]["sif"].get("left")),
+                                 ("right", zones[-1]["sif"].get("right"))) if v is not None}
+    if sif is not None:
+        row["K_left"] = f"{sif['left']:.6g}" if "left" in sif else "-"
+        row["K_right"] = f"{sif['right']:.6g}" if "right" in sif else "-"
+    if "sigma_xx" in e:
+        row["min sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmin)
+        row["max sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmax)
+    if "subsurface" in e:
+        ms = e["subsurface"]["max_shear"]
+        row["max shear @ depth/a"] = f"{ms['value']:.4g} @ {ms['depth_over_a']:.4g}"
+    if res.diagnostics:
+        d = res.diagnostics
+        row["check"] = f"{max(d['residual'], d['load_check']):.1e}"
+    row["time ms"] = f"{1e3 * res.time_s:.1f}"
+    return row
+
+
+def _cut_below_surface(entry: dict) -> bool:
+    """Whether a case's subsurface extrema were searched below a cut under the surface."""
+    sub = entry.get("subsurface")
+    return sub is not None and sub["region"]["y"][1] != sub["grid"]["y"]["stop"]
+
+
+def _fixed_inputs(scene: Scene, first: dict) -> dict:
+    """The inputs of the first case that the scene does not sweep."""
+    swept = {key for _, key in scene.sweep}
+    return {k: v for k, v in first.items()
+            if k not in swept and not (k == "speed" and "velocity" in swept)}
+
+
+def _extreme(values, fn) -> str:
+    v = np.asarray(values, dtype=float)
+    if not np.any(np.isfinite(v)):
+        return "-"
+    return f"{fn(v) + 0.0:.6g}"
