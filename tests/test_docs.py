@@ -3,6 +3,7 @@ docs`` executes it), every public name has its API page, and the examples in the
 from __future__ import annotations
 
 import doctest
+import inspect
 import py_compile
 import shutil
 import subprocess
@@ -123,3 +124,32 @@ def test_the_link_check_finds_broken_links(tmp_path):
     (tmp_path / "b.html").write_text('<p id="elsewhere"></p>')
     assert broken_links(tmp_path) == ["a.html: b.html#there (no such anchor)",
                                       "a.html: missing.png"]
+
+
+def _sections_missing(obj) -> list:
+    """The numpydoc sections a public name must have and lacks: Examples everywhere;
+    References (the paper or equation it implements) except on exceptions and warnings;
+    Parameters and Returns on functions; Attributes or Parameters on classes."""
+    from numpydoc.docscrape import ClassDoc, FunctionDoc
+    error = inspect.isclass(obj) and issubclass(obj, (Exception, Warning))
+    doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
+    missing = [] if doc["Examples"] else ["Examples"]
+    if not error and not doc["References"]:
+        missing.append("References")
+    if inspect.isfunction(obj):
+        if inspect.signature(obj).parameters and not doc["Parameters"]:
+            missing.append("Parameters")
+        if not doc["Returns"]:
+            missing.append("Returns")
+    elif not error and not (doc["Attributes"] or doc["Parameters"]):
+        missing.append("Attributes or Parameters")
+    return missing
+
+
+@pytest.mark.parametrize("name", [f"{m.__name__}.{n}" for m in (sie, contact) for n in m.__all__
+                                  if callable(getattr(m, n))])
+def test_public_docstrings_have_their_sections(name):
+    pytest.importorskip("numpydoc")
+    module, _, attr = name.partition(".")
+    obj = getattr({"sie": sie, "contact": contact}[module], attr)
+    assert _sections_missing(obj) == []
