@@ -40,6 +40,7 @@ docs: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[docs]"
 	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
 	$(PY) -m validation.report --out docs/_build/html/report
+	$(PY) docs/check_links.py docs/_build/html
 
 clean:
 	rm -rf $(VENV) build *.egg-info validation/out contact-out docs/_build docs/auto_examples \
