@@ -68,7 +68,6 @@ about 1e-12 relative), so the field is smooth through the repeated root.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np

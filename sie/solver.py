@@ -30,17 +30,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from .assembly import assemble_and_solve, operator_images, probe_kernel
-from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidCoefficientError,
-                     InvalidEndConditionError, InvalidOrderError, ResidualWarning,
-                     SideConditionError, call_checked, check_finite_real, check_order)
+from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidOrderError,
+                     ResidualWarning, SideConditionError, call_checked, check_finite_real,
+                     check_order)
 from .exponents import Exponents, check_coefficients, check_end, exponents_of
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
 from .unknowns import IntervalUnknown
 
-__all__ = ["solve", "Solution", "sie_exponents", "Exponents", "dominant_functionals",
-           "Functionals", "FunctionalsRule", "N_MAX"]
+__all__ = ["solve", "Solution", "Exponents", "dominant_functionals", "Functionals",
+           "FunctionalsRule", "N_MAX"]
 
 #: Largest number of Jacobi coefficients per interval that :func:`solve`,
 #: :func:`dominant_functionals` and :class:`FunctionalsRule` accept (a larger ``n`` raises

@@ -8,7 +8,7 @@ than the time itself.
 
 Targets (issue "sweeps that scale"):
 
-* the process pool on N workers at >= 0.8 N of the serial speed (>= 1.7x on 2 cores);
+* the process pool on N workers at >= 0.8 N of the serial speed, >= 1.7x on 2 cores;
 * a Dask LocalCluster of N worker processes within 15 % of the process pool at equal N;
 * a 1e5-case sweep in bounded memory, writing its table: the peak resident size of
   ``contact run`` on 1e5 cases within 10 % of that on 1e4 (both stated);
@@ -58,9 +58,10 @@ def scaling_rows(scene):
             t, res = _timed(lambda: run_scene(scene, executor=ex))
         pooled[n] = t
         same = all(repr(a.entry) == repr(b.entry) for a, b in zip(serial.cases, res.cases))
+        need = 1.7 if n == 2 else 0.8 * n          # the issue's figure for 2 cores, else 0.8 N
         rows.append((f"process pool, {n} worker(s){'' if same else ' (RESULTS DIFFER)'}", t,
-                     f"{t1 / t:.2f}x serial", f">= {0.8 * n:.1f}x"
-                     + (" PASS" if t1 / t >= 0.8 * n else " FAIL")))
+                     f"{t1 / t:.2f}x serial", f">= {need:.1f}x"
+                     + (" PASS" if t1 / t >= need else " FAIL")))
     try:
         from distributed import Client, LocalCluster
     except ImportError:

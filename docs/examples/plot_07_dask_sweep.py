@@ -12,7 +12,6 @@ address (``contact run scene.toml --scheduler tcp://scheduler:8786`` does the sa
 command line).
 """
 import matplotlib.pyplot as plt
-import numpy as np
 from distributed import Client, LocalCluster
 
 from contact.scene import parse_scene_text, run_scene
