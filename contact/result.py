@@ -441,8 +441,9 @@ def _residual_of(res):
     X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0]) * u
                         for z in res.zones])
     f = res.punch.slope(X)
-    psi = res.solution(X)
-    hc = res.constants.N11 * res.solution.cauchy(X)
+    F = res.solution.cauchy_limit(X)         # H[p] + i p on the zones (Plemelj), one pass
+    psi = F.imag
+    hc = res.constants.N11 * F.real
     lhs = res.constants.N12 * res.mu_f * psi + hc
     # the scale of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its
     # rounding is eps |N11| max|p|

@@ -144,6 +144,20 @@ class IntervalSolution:
             out[off] = out[off] + (corr if cplx else corr.real)
         return out
 
+    def cauchy_limit_local(self, v, ends=None):
+        """(1/pi) int_{-1}^{1} w phi / (u - v - i0) du at real v: the limit from above,
+        H[w phi](v) + i w phi(v) inside (Plemelj), the real transform outside.
+
+        Without breaks this is the series' transform evaluated at v itself, which the
+        recurrence starts from F_0(v + i0) (:func:`sie.cauchy.cauchy_series`): the two
+        parts come from one pass."""
+        if self.remainder is None:
+            return cauchy_series(self.coefficients, self.weight_data, v, ends=ends)
+        out = self.cauchy_local(v, False, ends).astype(complex)
+        inside = np.abs(v) < 1.0
+        out[inside] += 1j * self.psi_local(v[inside])
+        return out
+
     def log_local(self, v, ends=None):
         """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v (with breaks, plus the
         correction's part, :meth:`sie.remainder.InversionRemainder.log_potential`)."""
@@ -359,6 +373,54 @@ class Solution:
         for p in self.pieces:
             out += p.cauchy_local(p.interval.local(flat), cplx, p.interval.local_ends(flat))
         return out.reshape(z.shape)
+
+    def cauchy_limit(self, x, side=1):
+        """The one-sided limits of the Cauchy transform on the real line:
+        C(x + i0 side) with C(z) = (1/pi) int_L psi(t)/(t - z) dt.
+
+        On L this is H[psi](x) + side i psi(x) (the Plemelj formulas): the principal value
+        and psi from one evaluation.  Off L it is the (real) transform, as :meth:`cauchy`.
+
+        Parameters
+        ----------
+        x : array_like of float
+            Real points, not at an end of an interval.
+        side : {1, -1}
+            The limit from above (+1) or from below (-1).
+
+        Returns
+        -------
+        ndarray of complex, the shape of ``x``.
+
+        Raises
+        ------
+        EvaluationPointError
+            x complex, not finite or at an end; ``side`` not +1 or -1.
+
+        References
+        ----------
+        N. I. Muskhelishvili, Singular Integral Equations (1953), sec. 17 (the Plemelj
+        formulas).
+
+        Examples
+        --------
+        The airfoil equation's psi = sqrt(1 - s^2) (bounded ends, f = -s):
+
+        >>> import numpy as np, sie
+        >>> sol = sie.solve(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+        >>> F = sol.cauchy_limit(np.array([0.5]))
+        >>> round(float(F.real[0]), 12), round(float(F.imag[0]) ** 2, 12)   # H = -s, psi^2
+        (-0.5, 0.75)
+        """
+        if isinstance(side, bool) or side not in (1, -1):
+            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
+                                       f"got {side!r}")
+        x = self._real_points(x, "x")
+        flat, _ = evaluation_points(x.ravel(), self.intervals, "x")
+        out = np.zeros(flat.shape, dtype=complex)
+        for p in self.pieces:
+            out += p.cauchy_limit_local(p.interval.local(flat), p.interval.local_ends(flat))
+        return (out if side == 1 else out.conj()).reshape(x.shape)
 
     def log_potential(self, x):
         """V(x) = (1/pi) int_L psi(t) log|x - t| dt at real x (any x; finite at the ends).

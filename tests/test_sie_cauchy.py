@@ -27,6 +27,8 @@ import numpy as np
 import pytest
 from mpmath import mp
 
+import sie
+
 try:
     import manufactured as M
     import manufactured_intervals as MI
@@ -601,3 +603,46 @@ def test_log_potential_rejects_complex():
         sol.log_potential(np.array([0.3 + 0.1j]))
     with pytest.raises(sie.EvaluationPointError):
         sol.log_potential(np.array([np.nan]))
+
+
+# ---------------------------------------------------------------------------
+# one-sided limits on the line: C(x +- i0) = H[psi](x) +- i psi(x) (Plemelj)
+# ---------------------------------------------------------------------------
+def _limit_cases():
+    f = lambda s: np.cos(2.0 * s) + s ** 3          # noqa: E731
+    yield "kappa=1", sie.solve(f, a=0.4, b=1.0, n=20, left="singular", right="singular",
+                               total=1.0)
+    yield "kappa=0", sie.solve(f, a=-0.7, b=1.3, n=20, left="bounded", right="singular")
+    yield "breaks", sie.solve(lambda s: np.abs(s - 0.3), a=0.4, b=1.0, n=24, left="singular",
+                              right="bounded", breaks=(0.3,))
+    yield "two intervals", sie.solve(f, a=0.2, b=1.0, n=16, left="singular", right="singular",
+                                     total=(0.5, -0.2), intervals=[(-1.0, -0.1), (0.2, 1.0)])
+
+
+@pytest.mark.parametrize("name, sol", list(_limit_cases()), ids=[c[0] for c in _limit_cases()])
+def test_cauchy_limit_is_plemelj(name, sol):
+    x = np.concatenate([np.linspace(-0.999, 0.999, 41), [-3.0, 0.0, 2.5]])
+    x = x[[all(abs(v - e) > 1e-9 for e in np.ravel(sol.intervals)) for v in x]]
+    on = np.zeros(x.shape, dtype=bool)
+    for c, d in sol.intervals:
+        on |= (x > c) & (x < d)
+    H, psi = sol.cauchy(x), sol(x)
+    scale = max(np.max(np.abs(H)), np.max(np.abs(psi)))
+    for side in (1, -1):
+        F = sol.cauchy_limit(x, side)
+        assert np.max(np.abs(F.real - H)) <= 1e-13 * scale
+        assert np.max(np.abs(F.imag - side * np.where(on, psi, 0.0))) <= 1e-13 * scale
+    # and the limit of the transform at complex points approaching the line from above
+    xi = x[on][::5]
+    near = sol.cauchy(xi + 1e-9j)
+    assert np.max(np.abs(near - sol.cauchy_limit(xi))) <= 1e-6 * scale
+
+
+def test_cauchy_limit_refuses_bad_points_and_sides():
+    sol = sie.solve(lambda s: s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    with pytest.raises(sie.EvaluationPointError):
+        sol.cauchy_limit([1.0])                   # an end
+    with pytest.raises(sie.EvaluationPointError):
+        sol.cauchy_limit([0.5 + 0.1j])            # complex: use cauchy
+    with pytest.raises(sie.EvaluationPointError):
+        sol.cauchy_limit([0.5], side=0)
