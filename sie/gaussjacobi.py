@@ -662,19 +662,27 @@ def _half_asymptotic(n, a, b, m):
     return th, w
 
 
+@jit()
+def _jacobi_bands(n, a, b):
+    """Diagonal and off-diagonal of the symmetric Jacobi matrix of P^{(a,b)} (Golub & Welsch
+    1969): its eigenvalues are the roots of P_n."""
+    diag = np.empty(n)
+    off = np.empty(n - 1)
+    diag[0] = (b - a) / (a + b + 2.0)
+    for k in range(1, n):
+        s = 2.0 * k + a + b
+        diag[k] = (b * b - a * a) / (s * (s + 2.0))
+    for k in range(1, n):                       # off-diagonal entries k = 1..n-1
+        s1 = 2.0 * k + a + b
+        # (k+a+b)/(2k+a+b-1) is 0/0 at k = 1, a+b = -1; its value there is exactly 1
+        ratio = 1.0 if k == 1 else (k + a + b) / (s1 - 1.0)
+        off[k - 1] = 2.0 / s1 * math.sqrt(k * (k + a) * (k + b) * ratio / (s1 + 1.0))
+    return diag, off
+
+
 def _golub_welsch_guess(n, a, b):
     """Eigenvalues of the Jacobi matrix (Golub & Welsch 1969), ascending."""
-    k = np.arange(n, dtype=float)
-    s = 2.0 * k + a + b
-    diag = np.empty(n)
-    diag[0] = (b - a) / (a + b + 2.0)
-    diag[1:] = (b * b - a * a) / (s[1:] * (s[1:] + 2.0))
-    kk = k[:-1] + 1.0  # off-diagonal k = 1..n-1
-    s1 = 2.0 * kk + a + b
-    # (k+a+b)/(2k+a+b-1) is 0/0 at k = 1, a+b = -1; its value there is exactly 1
-    ratio = np.ones_like(kk)
-    ratio[1:] = (kk[1:] + a + b) / (s1[1:] - 1.0)
-    off = 2.0 / s1 * np.sqrt(kk * (kk + a) * (kk + b) * ratio / (s1 + 1.0))
+    diag, off = _jacobi_bands(n, a, b)
     # LAPACK dsterf (Pal-Walker-Kahan QL, eigenvalues only): 2x faster than numpy's dense
     # eigvalsh or scipy's eigh_tridiagonal at these sizes.  Lazy import: numba's first
     # call imports scipy.linalg anyway.
@@ -768,40 +776,33 @@ def _check_rung2(n, a, b, x, w):
             f"separate the nodes (x[{i}] = {x[i]!r} >= x[{i + 1}] = {x[i + 1]!r}); please report")
 
 
+@jit()
 def _positive_angles(th0):
     """Starting angles (ascending) with no zeros.  An eigenvalue of the Jacobi matrix can
     land on or beyond x = +-1 (absolute error ~ n eps, while an exponent near -1 puts the
     first node ~1e-15 from the end); its angle is then 0, where Newton divides by
     sin(theta) = 0.  Such starts are spread over (0, first positive angle): distinct, and
     to the right of nothing but the roots they stand for."""
-    if not (th0.size and th0[0] <= 0.0):          # ascending: zeros come first
-        return th0
-    zero = th0 <= 0.0
-    if zero.any():
-        pos = th0[~zero]
-        top = pos[0] if pos.size else 1.0 / th0.size ** 2
-        k = np.count_nonzero(zero)
-        th0 = th0.copy()
-        th0[:k] = top * np.arange(1, k + 1) / (k + 1)
-    return th0
-
-
-@jit()
-def _small_angles(x_sorted):
-    """Angles from the nearer end of the starting nodes ``x_sorted`` (ascending, all on one
-    side: x >= 0 measured from 1, else from -1 after reflection), as _positive_angles."""
-    m = x_sorted.size
-    th = np.empty(m)
-    for i in range(m):
-        th[i] = math.acos(min(max(x_sorted[i], -1.0), 1.0))
+    th = th0.copy()
+    m = th.size
     k = 0
-    while k < m and th[k] <= 0.0:
+    while k < m and th[k] <= 0.0:               # ascending: zeros come first
         k += 1
     if k:
         top = th[k] if k < m else 1.0 / (m * m)
         for i in range(k):
             th[i] = top * (i + 1) / (k + 1)
     return th
+
+
+@jit()
+def _angles_from_end(x_sorted):
+    """Starting angles from the nearer end of nodes ``x_sorted`` (ascending, all on one side:
+    x >= 0 measured from 1, else from -1 after reflection), no zeros (:func:`_positive_angles`)."""
+    th = np.empty(x_sorted.size)
+    for i in range(x_sorted.size):
+        th[i] = math.acos(min(max(x_sorted[i], -1.0), 1.0))
+    return _positive_angles(th)
 
 
 @jit()
@@ -813,17 +814,11 @@ def _small_rule(n, a, b):
     has more than N_BOUNDARY nodes or the series cancelled past dd somewhere, and the
     caller takes the general path.  One kernel call instead of ~20 small numpy and Python
     steps: a new pair of exponents at n = 5 costs ~10 us instead of ~70 us."""
-    J = np.zeros((n, n))
-    J[0, 0] = (b - a) / (a + b + 2.0)
-    for k in range(1, n):
-        s = 2.0 * k + a + b
-        J[k, k] = (b * b - a * a) / (s * (s + 2.0))
-    for k in range(1, n):                       # off-diagonal entries k = 1..n-1
-        s1 = 2.0 * k + a + b
-        ratio = 1.0 if k == 1 else (k + a + b) / (s1 - 1.0)   # 0/0 at k = 1, a+b = -1: 1
-        off = 2.0 / s1 * math.sqrt(k * (k + a) * (k + b) * ratio / (s1 + 1.0))
-        J[k, k - 1] = off
-        J[k - 1, k] = off
+    diag, off = _jacobi_bands(n, a, b)
+    J = np.diag(diag)
+    for k in range(n - 1):
+        J[k + 1, k] = off[k]
+        J[k, k + 1] = off[k]
     guess = np.linalg.eigvalsh(J)               # ascending
     n_left = 0
     while n_left < n and guess[n_left] < 0.0:
@@ -833,7 +828,7 @@ def _small_rule(n, a, b):
     w = np.empty(n)
     if n_left > N_BOUNDARY or n_right > N_BOUNDARY:
         return x, w, False
-    th_r, w_r, ok_r = _dd_boundary(n, a, b, _small_angles(guess[n_left:][::-1].copy()),
+    th_r, w_r, ok_r = _dd_boundary(n, a, b, _angles_from_end(guess[n_left:][::-1].copy()),
                                    _end_scale(n, a, b))
     for i in range(n_right):
         if not ok_r[i]:
@@ -841,7 +836,7 @@ def _small_rule(n, a, b):
         x[n - 1 - i] = math.cos(th_r[i])
         w[n - 1 - i] = w_r[i]
     if n_left:
-        th_l, w_l, ok_l = _dd_boundary(n, b, a, _small_angles(-guess[:n_left]),
+        th_l, w_l, ok_l = _dd_boundary(n, b, a, _angles_from_end(-guess[:n_left]),
                                        _end_scale(n, b, a))
         for i in range(n_left):
             if not ok_l[i]:
@@ -936,8 +931,8 @@ def gauss_jacobi(n, alpha, beta):
     if n <= N_RECURRENCE_MAX or max(a, b) > _ASY_MAX_PARAM:
         guess = _golub_welsch_guess(n, a, b)
         right = guess >= 0.0
-        th_r0 = _positive_angles(np.arccos(np.clip(guess[right][::-1], -1.0, 1.0)))  # from x = 1
-        th_l0 = _positive_angles(np.arccos(np.clip(-guess[~right], -1.0, 1.0)))      # from x = -1
+        th_r0 = _angles_from_end(guess[right][::-1].copy())       # from x = 1
+        th_l0 = _angles_from_end(-guess[~right])                   # from x = -1
         th_r, w_r = _half_small(n, a, b, th_r0)
         th_l, w_l = _half_small(n, b, a, th_l0) if th_l0.size else (th_l0, th_l0)
     else:
