@@ -415,8 +415,11 @@ class Solution:
         if isinstance(side, bool) or side not in (1, -1):
             raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
                                        f"got {side!r}")
-        x = self._real_points(x, "x")
-        flat, _ = evaluation_points(x.ravel(), self.intervals, "x")
+        if np.asarray(x).dtype.kind == "c":
+            raise EvaluationPointError("x must be real (the limits are taken on the real "
+                                       "line; use cauchy() at complex points); got complex")
+        x, _ = evaluation_points(x, self.intervals, "x")     # finite, not at an end
+        flat = x.ravel()
         out = np.zeros(flat.shape, dtype=complex)
         for p in self.pieces:
             out += p.cauchy_limit_local(p.interval.local(flat), p.interval.local_ends(flat))

@@ -7,9 +7,7 @@ Oracles: contact.solve called directly with the same inputs, and result.json of 
 """
 from __future__ import annotations
 
-import contextlib
 import csv
-import io
 import json
 import os
 import sys
@@ -22,11 +20,15 @@ import numpy as np
 import pytest
 
 import contact
-from contact import cli
 from contact.scene import parse_scene_text, run_scene
 from contact.scene.figures import MAX_CURVES
 from contact.scene.output import _writing_bar
 from contact.scene.spec import clean_linspace
+
+try:
+    from cli_helpers import run_cli
+except ImportError:  # tests/ imported as a package
+    from tests.cli_helpers import run_cli
 
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
 
@@ -52,14 +54,6 @@ def write_scene(tmp_path, text, name="scene.toml"):
     path = tmp_path / name
     path.write_text(textwrap.dedent(text))
     return path
-
-
-def run_cli(*args):
-    """``contact ARGS`` in this process: (exit status, stdout, stderr)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = cli.main([str(a) for a in args])
-    return rc, out.getvalue(), err.getvalue()
 
 
 def read_sweep(path):

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import contextlib
 import csv
-import io
 import itertools
 import json
 import textwrap
@@ -25,13 +24,17 @@ import numpy as np
 import pytest
 
 import contact
-from contact import cli
 from contact.scene import (CaseError, SceneWriter, format_table, iter_scene, parse_scene_text,
                            run_scene)
 from contact.scene import batch, output
 from contact.scene import run as run_module
 from contact.scene.output import dumps_json
 from contact.scene.summary import TABLE_ROWS
+
+try:
+    from cli_helpers import run_cli
+except ImportError:  # tests/ imported as a package
+    from tests.cli_helpers import run_cli
 
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
 
@@ -89,13 +92,6 @@ def load_sweep(n):
         [outputs]
         fields = ["ends"]
     """))
-
-
-def run_cli(*args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = cli.main([str(a) for a in args])
-    return rc, out.getvalue(), err.getvalue()
 
 
 def read_csv(path):
