@@ -1,6 +1,6 @@
-"""Chunked execution of a scene's cases (contact.scene.batch): chunk sizes, grouping by
-material, scene order and per-case errors through a process pool and a Dask
-cluster, results identical to a serial run.  (Streaming -- results in order as they complete,
+"""Chunked execution of a scene's cases (contact.scene.batch): chunk sizes, ranges of
+indices built where they run, scene order and per-case errors through a process pool and a
+Dask cluster, results identical to a serial run.  (Streaming -- results in order as they complete,
 a bounded window, bounded memory -- is tested in test_scene_stream.py.)"""
 from __future__ import annotations
 
@@ -16,10 +16,22 @@ from contact.scene import batch
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
 
 
+class FakeSource:
+    """What iter_chunked needs of a Scene: case_count and iter_cases(start, stop) (a
+    module-level class: the worker processes of a pool unpickle it)."""
+
+    def __init__(self, cases):
+        self.cases = list(cases)
+        self.case_count = len(self.cases)
+
+    def iter_cases(self, start=0, stop=None):
+        return iter(self.cases[start:stop])
+
+
 def fake_cases(n, speeds=(0.0, 0.3)):
     per = n // len(speeds)
-    return [FakeCase(i, "m", speeds[min(i // per, len(speeds) - 1)], {"speed": 0.0})
-            for i in range(n)]
+    return FakeSource(FakeCase(i, "m", speeds[min(i // per, len(speeds) - 1)], {"speed": 0.0})
+                      for i in range(n))
 
 
 def double_or_fail(case):
@@ -41,46 +53,49 @@ def test_chunk_size_targets_the_time_and_the_balance():
     assert batch.chunk_size(1, 8, 1e-5) == 1
 
 
-def chunked(cases, size, lag=1000):
-    """Every chunk batch.Chunker hands out for ``cases``, in the order it does."""
-    chunker = batch.Chunker(size, lag)
-    return [chunk for case in cases for chunk in chunker.add(case)] + chunker.flush()
+def test_chunks_are_consecutive_ranges_built_by_the_worker(monkeypatch):
+    """After the probe (three cases here), the rest goes out as consecutive ranges of
+    chunk_size cases, the last one shorter; each worker builds its cases from the source."""
+    monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 3)
+    ex = _InlineExecutor()
+    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(13), ex, lambda k: None))
+    assert ex.ranges == [(3, 6), (6, 9), (9, 12), (12, 13)]
+    assert got == [(i, i) for i in range(13)]
 
 
-def indices(chunks):
-    return [[c.index for c in chunk] for chunk in chunks]
+def test_scene_cases_by_index_equal_the_sweep():
+    """Scene.case(i) (a mixed-radix digit per swept key) and iter_cases(start, stop) build the
+    same cases as the whole sweep, in its order; an index outside the sweep is refused."""
+    s = _sweep_three_keys()
+    every = s.cases()
+    assert [c.index for c in every] == list(range(s.case_count)) and s.case_count == 12
+    assert all(s.case(i) == c for i, c in enumerate(every))
+    assert list(s.iter_cases(5, 9)) == every[5:9]
+    assert list(s.iter_cases(10, 99)) == every[10:]
+    for bad in (-1, 12, 1.0, True):
+        with pytest.raises(IndexError, match=r"case index must be in \[0, 12\)"):
+            s.case(bad)
 
 
-def test_chunks_share_the_material_in_scene_order():
-    cases = fake_cases(10, speeds=(0.0, 0.3))
-    chunks = sorted(chunked(cases, 3), key=lambda ch: ch[0].index)
-    assert indices(chunks) == [[0, 1, 2], [3, 4, 5], [6, 7, 8], [9]]   # across the speeds
-    # two materials interleaved: each chunk holds one, in scene order within it
-    mixed = [FakeCase(i, ("m1", "m2")[i % 2], 0.0, {}) for i in range(10)]
-    assert indices(chunked(mixed, 3)) == [[0, 2, 4], [1, 3, 5], [6, 8], [7, 9]]
-
-
-def test_a_rare_key_is_cut_once_it_lags():
-    """Case 0 alone with its material: its chunk is handed out once the newest case read is
-    ``lag`` cases after it, not at the end."""
-    cases = [FakeCase(0, "x", 0.3, {})] + [FakeCase(i, "m", 0.3, {}) for i in range(1, 9)]
-    chunker = batch.Chunker(3, 4)
-    out = [indices(chunker.add(case)) for case in cases]
-    assert out == [[], [], [], [[1, 2, 3]], [[0]], [], [[4, 5, 6]], [], []]
-    assert indices(chunker.flush(below=8)) == [[7]]         # after a failure at case 8
+def _sweep_three_keys():
+    from contact.scene import parse_scene_text
+    return parse_scene_text(
+        'title = "t"\n[material]\npreset = "zhou2014"\n[punch]\nkind = "cylindrical"\n'
+        'radius = [100.0, 50.0]\n[motion]\nload = 0.01\nspeed = [0.0, 0.3]\n'
+        'friction = [0.0, 0.1, 0.2]\n[outputs]\nfields = ["ends"]\n')
 
 
 @pytest.mark.parametrize("pool", ["serial", "threads", "processes"])
 def test_first_failure_in_scene_order_ends_the_results(pool):
     cases = fake_cases(40)
     if pool == "serial":
-        got = list(batch.iter_chunked(double_or_fail, cases, None, lambda k: None, 40))
+        got = list(batch.iter_chunked(double_or_fail, cases, None, lambda k: None))
     else:
         make = ThreadPoolExecutor if pool == "threads" else ProcessPoolExecutor
         with make(2) as ex:
-            got = list(batch.iter_chunked(double_or_fail, iter(cases), ex, lambda k: None, 40))
-    assert [c.index for c, _ in got] == list(range(6))      # in order, up to the failure
-    assert all(res == 2 * c.index for c, res in got[:5])
+            got = list(batch.iter_chunked(double_or_fail, cases, ex, lambda k: None))
+    assert [i for i, _ in got] == list(range(6))            # in order, up to the failure
+    assert all(res == 2 * i for i, res in got[:5])
     assert isinstance(got[5][1], contact.LoadError)
 
 
@@ -88,7 +103,7 @@ def test_progress_counts_cases():
     counted = []
     cases = fake_cases(12)
     with ThreadPoolExecutor(2) as ex:
-        list(batch.iter_chunked(lambda c: c.index, cases, ex, counted.append, 12))
+        list(batch.iter_chunked(lambda c: c.index, cases, ex, counted.append))
     assert sum(counted) == 12
 
 
@@ -183,11 +198,16 @@ def _plain(o):
 
 
 class _InlineExecutor:
-    """An executor that runs each task at submit: every chunk is done before it is awaited."""
+    """An executor that runs each task at submit (every chunk is done before it is awaited)
+    and records the ranges of cases handed out."""
     _max_workers = 2
+
+    def __init__(self):
+        self.ranges = []
 
     def submit(self, fn, *args):
         from concurrent.futures import Future
+        self.ranges.append(args[2:])
         fut = Future()
         fut.set_result(fn(*args))
         return fut
@@ -198,8 +218,6 @@ def test_every_case_delivered_when_the_window_empties_at_once(monkeypatch):
     to the end of the sweep instead of stopping at the first window."""
     monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
     monkeypatch.setattr(batch, "CHUNKS_AHEAD", 1)
-    cases = fake_cases(100, speeds=(0.0,))
-    got = list(batch.iter_chunked(lambda c: c.index, iter(cases), _InlineExecutor(),
-                                  lambda k: None, 100))
-    assert [c.index for c, _ in got] == list(range(100))
-    assert all(res == c.index for c, res in got)
+    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(100, speeds=(0.0,)),
+                                  _InlineExecutor(), lambda k: None))
+    assert got == [(i, i) for i in range(100)]

@@ -235,10 +235,9 @@ def test_long_sweep_prints_its_first_and_last_cases_and_extremes():
 # order, window, failures
 # --------------------------------------------------------------------------
 def test_scene_order_kept_when_chunks_finish_out_of_order(monkeypatch):
-    """Case 3 (the first sent to the pool) is slow, so later chunks finish first; its speed
-    is rare and the others cycle through five: the results still come in scene order, and no
-    more than the window (CHUNKS_AHEAD full chunks per worker) is read past the first case not
-    yet delivered."""
+    """Case 3 (the first sent to the pool) is slow, so later chunks finish first: the results
+    still come in scene order, and no more than the window (CHUNKS_AHEAD full chunks per
+    worker) is handed out past the first case not yet delivered."""
     monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
     monkeypatch.setattr(batch, "CHUNKS_AHEAD", 2)
     window = 2 * 2 * 4
@@ -251,19 +250,24 @@ def test_scene_order_kept_when_chunks_finish_out_of_order(monkeypatch):
             finished.append(case.index)
         return -case.index
 
-    cases = [FakeCase(i, "m", 0.9 if i == 3 else float(i % 5), {}) for i in range(300)]
-    read = []
+    class Source:
+        """300 cases; records the highest index handed out to a worker."""
+        case_count = 300
+        handed = 0
 
-    def reading():
-        for case in cases:
-            read.append(case.index)
-            yield case
+        def iter_cases(self, start=0, stop=None):
+            stop = self.case_count if stop is None else stop
+            with lock:
+                self.handed = max(self.handed, stop)
+            return (FakeCase(i, "m", float(i % 5), {}) for i in range(start, stop))
+
+    source = Source()
     delivered, ahead = [], 0
     with ThreadPoolExecutor(2) as ex:
-        for case, res in batch.iter_chunked(solve, reading(), ex, lambda k: None, 300):
-            ahead = max(ahead, len(read) - len(delivered))
-            delivered.append(case.index)
-            assert res == -case.index
+        for index, res in batch.iter_chunked(solve, source, ex, lambda k: None):
+            ahead = max(ahead, source.handed - len(delivered))
+            delivered.append(index)
+            assert res == -index
     assert delivered == list(range(300))
     assert finished != sorted(finished)                      # out of order, delivered in order
     assert finished.index(3) > 3 + window // 2

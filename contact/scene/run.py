@@ -390,14 +390,14 @@ class SceneRun:
         bar = _progress_bar(self.count, self._progress)
         delivered = 0
         try:
-            for case, res in iter_chunked(run_case, self.scene.iter_cases(), self._executor,
-                                          bar.update, self.count):
+            for index, res in iter_chunked(run_case, self.scene, self._executor, bar.update):
                 if isinstance(res, Exception):
-                    with _naming(case, self.scene):
+                    with _naming(self.scene.case(index), self.scene):
                         raise res
                 delivered += 1
                 if per_speed:
-                    res.entry = _with_speed_fields(res.entry, self._speed_fields(case.speed),
+                    speed = res.entry["inputs"]["speed"]
+                    res.entry = _with_speed_fields(res.entry, self._speed_fields(speed),
                                                    self.scene.fields)
                 self._case_warnings += [f"case {res.index} ({res.label}): {w}"
                                         for w in res.warnings]

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import functools
-import itertools
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -265,19 +264,46 @@ class Scene:
         """Every case, in scene order (:meth:`iter_cases` as a list)."""
         return list(self.iter_cases())
 
-    def iter_cases(self) -> Iterator[Case]:
-        """The cases one at a time, built as they are asked for: the Cartesian product of the
-        swept values, the first swept key varying slowest."""
-        swept = [self._section(sec)[key] for sec, key in self.sweep]
-        for index, values in enumerate(itertools.product(*swept)):
-            point = dict(zip(self.sweep, values))
-            punch = {k: point.get(("punch", k), v) for k, v in self.punch.items()}
-            motion = {k: point.get(("motion", k), v) for k, v in self.motion.items()}
-            label = ", ".join(f"{key} = {_fmt(v)}" for (_, key), v in point.items())
-            yield Case(index=index, label=label or self.title,
-                       inputs=_case_inputs(self.material, punch, motion),
-                       material=self.material, punch=_punch_spec(punch, self.base_dir),
-                       fields=self.fields, x=self.x, numerics=self.numerics, grid=self.grid)
+    def iter_cases(self, start: int = 0, stop: int | None = None) -> Iterator[Case]:
+        """The cases ``start`` <= index < ``stop`` (default: all) one at a time, built as they
+        are asked for, in scene order (:meth:`case`)."""
+        stop = self.case_count if stop is None else min(stop, self.case_count)
+        swept = self._swept()
+        for index in range(max(start, 0), stop):
+            yield self._case_at(index, swept)
+
+    def case(self, index: int) -> Case:
+        """Case ``index`` of the sweep, built on its own: the point of the Cartesian product
+        of the swept values with the first swept key varying slowest (the index read as a
+        mixed-radix number, a digit per swept key).  A worker given a range of indices builds
+        its cases from the scene this way.
+
+        Raises
+        ------
+        IndexError
+            ``index`` outside [0, case_count).
+        """
+        if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or \
+                not 0 <= index < self.case_count:
+            raise IndexError(f"case index must be in [0, {self.case_count}), got {index!r}")
+        return self._case_at(int(index), self._swept())
+
+    def _swept(self):
+        return [self._section(sec)[key] for sec, key in self.sweep]
+
+    def _case_at(self, index, swept):
+        values, rest = [], index
+        for column in reversed(swept):
+            rest, digit = divmod(rest, len(column))
+            values.append(column[digit])
+        point = dict(zip(self.sweep, reversed(values)))
+        punch = {k: point.get(("punch", k), v) for k, v in self.punch.items()}
+        motion = {k: point.get(("motion", k), v) for k, v in self.motion.items()}
+        label = ", ".join(f"{key} = {_fmt(v)}" for (_, key), v in point.items())
+        return Case(index=index, label=label or self.title,
+                    inputs=_case_inputs(self.material, punch, motion),
+                    material=self.material, punch=_punch_spec(punch, self.base_dir),
+                    fields=self.fields, x=self.x, numerics=self.numerics, grid=self.grid)
 
     @property
     def case_count(self) -> int:
