@@ -4,6 +4,7 @@ Dask cluster, results identical to a serial run.  (Streaming -- results in order
 a bounded window, bounded memory -- is tested in test_scene_stream.py.)"""
 from __future__ import annotations
 
+import math
 from collections import namedtuple
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 
@@ -55,12 +56,33 @@ def test_chunk_size_targets_the_time_and_the_balance():
 
 def test_chunks_are_consecutive_ranges_built_by_the_worker(monkeypatch):
     """After the probe (three cases here), the rest goes out as consecutive ranges of
-    chunk_size cases, the last one shorter; each worker builds its cases from the source."""
-    monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 3)
+    chunk_size cases, shorter toward the end (tail_size); each worker builds its cases from
+    the source."""
+    monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
     ex = _InlineExecutor()
-    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(13), ex, lambda k: None))
-    assert ex.ranges == [(3, 6), (6, 9), (9, 12), (12, 13)]
-    assert got == [(i, i) for i in range(13)]
+    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(30), ex, lambda k: None))
+    # 27 left on 2 workers: 4 while ceil(left / 4) >= 4 (27, 23, 19, 15 left), then
+    # ceil(left / 4): 11 -> 3, 8 -> 2, 6 -> 2, then one at a time
+    assert ex.ranges == [(3, 7), (7, 11), (11, 15), (15, 19), (19, 22), (22, 24), (24, 26),
+                         (26, 27), (27, 28), (28, 29), (29, 30)]
+    assert got == [(i, i) for i in range(30)]
+
+
+@pytest.mark.parametrize("size, left, workers", [(540, 9997, 2), (1, 50, 2), (100, 7, 16),
+                                                 (64, 10**5, 16), (8, 9, 1)])
+def test_tail_chunks_shrink_and_cover_every_case(size, left, workers):
+    """Guided self-scheduling: the chunk sizes never grow, never exceed ``size`` nor fall below
+    size / TAIL_SPLIT**3 (except the very last cases), and add up to the cases left; the last
+    chunk holds no more than its share of the last round."""
+    sizes = []
+    while left > 0:
+        k = batch.tail_size(size, left, workers)
+        sizes.append(k)
+        left -= k
+    assert sizes == sorted(sizes, reverse=True) and sizes[0] <= size
+    floor = max(1, size // batch.TAIL_SPLIT ** 3)
+    assert all(k >= floor for k in sizes[:-1])
+    assert sizes[-1] <= max(floor, math.ceil(size / batch.TAIL_SPLIT))
 
 
 def test_scene_cases_by_index_equal_the_sweep():

@@ -36,6 +36,8 @@ from concurrent.futures import FIRST_COMPLETED, wait
 TARGET_CHUNK_S = 0.2
 #: At least this many chunks per worker, for balance.
 CHUNKS_PER_WORKER = 4
+#: Toward the end a chunk holds at most 1/(TAIL_SPLIT workers) of the cases left.
+TAIL_SPLIT = 2
 #: Full chunks per worker handed out past the first case not yet delivered.
 CHUNKS_AHEAD = 8
 #: Cases solved here first, to size the chunks (the fastest of them counts).
@@ -152,7 +154,7 @@ def iter_chunked(fn, source, executor, on_done):
             return
     workers = worker_count(executor)
     size = chunk_size(max(total - probe, 1), workers, per_case)
-    yield from _windowed(fn, source, executor, probe, total, size,
+    yield from _windowed(fn, source, executor, probe, total, size, workers,
                          CHUNKS_AHEAD * workers * size, on_done)
 
 
@@ -163,10 +165,19 @@ def _run_here(fn, case, on_done):
     return res
 
 
-def _windowed(fn, source, executor, start, total, size, ahead, on_done):
-    """The cases ``start`` <= index < ``total`` (:func:`iter_chunked`): ranges of ``size``
-    submitted to ``executor`` while fewer than ``ahead`` cases handed out wait for delivery,
-    delivered in order."""
+def tail_size(size: int, left: int, workers: int) -> int:
+    """Cases in the next chunk when ``left`` cases are not yet handed out: ``size``, or less
+    toward the end of the sweep, a 1/(TAIL_SPLIT workers) share of what is left (guided
+    self-scheduling: the last chunks are short, so that the workers finish together instead
+    of one of them solving a full chunk alone), down to ``size`` / TAIL_SPLIT**3."""
+    share = math.ceil(left / (TAIL_SPLIT * max(workers, 1)))
+    return max(1, min(size, left, max(share, size // TAIL_SPLIT ** 3)))
+
+
+def _windowed(fn, source, executor, start, total, size, workers, ahead, on_done):
+    """The cases ``start`` <= index < ``total`` (:func:`iter_chunked`): ranges of about
+    ``size`` (:func:`tail_size`) submitted to ``executor`` while fewer than ``ahead`` cases
+    handed out wait for delivery, delivered in order."""
     done = {}                           # first index of a finished chunk -> its results
     running = {}                        # future -> first index of its chunk
     next_start = start                  # first index not yet handed out
@@ -175,7 +186,7 @@ def _windowed(fn, source, executor, start, total, size, ahead, on_done):
     try:
         while delivered < total:
             while next_start < min(total, failed) and next_start - delivered < ahead:
-                stop = min(next_start + size, total)
+                stop = next_start + tail_size(size, total - next_start, workers)
                 running[executor.submit(run_range, fn, source, next_start, stop)] = next_start
                 next_start = stop
             while delivered in done:
