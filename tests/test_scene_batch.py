@@ -4,11 +4,14 @@ Dask cluster, results identical to a serial run.  (Streaming -- results in order
 a bounded window, bounded memory -- is tested in test_scene_stream.py.)"""
 from __future__ import annotations
 
+import itertools
 import math
 from collections import namedtuple
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import contact
 from contact.scene import load_scene, run_scene
@@ -97,6 +100,33 @@ def test_scene_cases_by_index_equal_the_sweep():
     for bad in (-1, 12, 1.0, True):
         with pytest.raises(IndexError, match=r"case index must be in \[0, 12\)"):
             s.case(bad)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.integers(1, 4), min_size=0, max_size=4), st.permutations(range(4)))
+def test_case_by_index_is_the_cartesian_product(lengths, order):
+    """Any number of swept keys in any order, any lengths: case i carries the i-th point of
+    itertools.product of the swept lists (the first swept key varying slowest), and the
+    ranges of iter_cases cut that sequence without a gap or an overlap."""
+    from contact.scene import parse_scene_text
+    keys = [("speed", 0.1), ("friction", 0.05), ("load", 0.01), ("radius", 50.0)]
+    keys = [keys[k] for k in order][:len(lengths)]
+    swept = {key: [step * (j + 1) for j in range(m)] for (key, step), m in zip(keys, lengths)}
+    motion = "".join(f"{k} = {swept[k]}\n" for k, _ in keys if k != "radius")
+    radius = swept.get("radius", 100.0)
+    s = parse_scene_text(f'title = "t"\n[material]\npreset = "zhou2014"\n[punch]\n'
+                         f'kind = "cylindrical"\nradius = {radius}\n[motion]\n'
+                         f'{motion if "load" in swept else motion + "load = 0.01" + chr(10)}'
+                         '[outputs]\nfields = ["ends"]\n')
+    names = [key for _, key in s.sweep]
+    expected = list(itertools.product(*(swept[k] for k in names)))
+    assert s.case_count == len(expected)
+    for i, point in enumerate(expected):
+        case = s.case(i)
+        assert case.index == i and tuple(case.inputs[k] for k in names) == point
+    cut = sorted({0, s.case_count} | {len(expected) // 3, len(expected) // 2})
+    pieces = [c.index for a, b in zip(cut[:-1], cut[1:]) for c in s.iter_cases(a, b)]
+    assert pieces == list(range(s.case_count))
 
 
 def _sweep_three_keys():
