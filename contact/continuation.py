@@ -579,16 +579,20 @@ def _check_weight(alpha, beta):
     return out
 
 
+@functools.lru_cache(maxsize=8)
 def _resolution(sol):
     """What the checks forgive: 1e-9, or the size of the last two Jacobi coefficients
     relative to the largest (times 10) when n does not resolve p (a kink without breaks at a
-    small n: wiggles of that size are truncation, not a lost contact)."""
-    tails = []
-    for c in (sol.coefficients if np.ndim(sol.kappa) else (sol.coefficients,)):
-        c = np.abs(np.asarray(c))
-        if c.size > 2 and c.max() > 0:
-            tails.append(10.0 * (c[-1] + c[-2]) / c.max())
-    return max([1e-9] + tails)
+    small n: wiggles of that size are truncation, not a lost contact).  Kept for the last
+    few solutions (immutable, hashed by identity): a state is checked, then tested for its
+    resolution."""
+    tail = 1e-9
+    for piece in sol.pieces:
+        c = np.abs(piece.coefficients)
+        top = c.max() if c.size > 2 else 0.0
+        if top > 0.0:
+            tail = max(tail, 10.0 * float(c[-1] + c[-2]) / float(top))
+    return tail
 
 
 def _gap_samples(face, eq, state, m=400):
