@@ -147,7 +147,7 @@ def cmd_run(args) -> int:
     progress = not args.quiet
     with _writing_into(args.out):
         writer = scenes.SceneWriter(scene, args.out, scene.case_count,
-                                    figures=None if args.figures else False)
+                                    figures=None if args.figures else False, table=progress)
     with writer:
         with _executor(args.jobs, args.scheduler) as executor:
             run = scenes.iter_scene(scene, executor=executor, progress=progress)

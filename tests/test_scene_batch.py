@@ -129,6 +129,13 @@ def test_case_by_index_is_the_cartesian_product(lengths, order):
     assert pieces == list(range(s.case_count))
 
 
+def test_punch_specs_are_the_distinct_punches_of_the_sweep():
+    """What the scene checks at parse time: each punch once, those of the cases in order."""
+    s = _sweep_three_keys()
+    specs = list(s.punch_specs())
+    assert len(specs) == 2 and specs == list(dict.fromkeys(c.punch for c in s.cases()))
+
+
 def _sweep_three_keys():
     from contact.scene import parse_scene_text
     return parse_scene_text(

@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import contact
 from contact.scene import parse_scene_text, run_scene
@@ -388,3 +390,35 @@ def test_figures_of_a_long_sweep_are_a_coloured_family_and_fast(tmp_path):
     assert ax.get_legend() is None                    # 25 frictions: named in the title
     assert "friction also varies" in title
     plt.close(fig)
+
+
+# --------------------------------------------------------------------------
+# result.json's encoder
+# --------------------------------------------------------------------------
+_JSON_SCALARS = (st.floats(allow_nan=False, allow_infinity=False) | st.integers()
+                 | st.text() | st.booleans() | st.none())
+_JSON_VALUES = st.recursive(
+    _JSON_SCALARS | st.lists(_JSON_SCALARS, max_size=5),
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=5), inner,
+                                                                 max_size=4),
+    max_leaves=20)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_JSON_VALUES)
+def test_dumps_json_is_json(value):
+    """dumps_json writes what json.dumps would, laid out differently: the same value back,
+    and each scalar (and each list of scalars) exactly as json.dumps spells it."""
+    from contact.scene.output import _json_scalar, dumps_json
+    assert json.loads(dumps_json(value)) == json.loads(json.dumps(value))
+    if not isinstance(value, (dict, list)):
+        assert _json_scalar(value) == json.dumps(value)
+    elif isinstance(value, list) and not any(isinstance(v, (dict, list)) for v in value):
+        assert dumps_json(value) == json.dumps(value)
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), [1.0, float("-inf")]])
+def test_dumps_json_refuses_what_json_cannot_hold(bad):
+    from contact.scene.output import dumps_json
+    with pytest.raises(ValueError, match="not JSON compliant"):
+        dumps_json(bad)

@@ -200,6 +200,27 @@ def test_streamed_files_equal_the_in_memory_result(tmp_path, text, jobs):
     assert shape(printed) == shape(format_table(result))
 
 
+def test_quiet_run_keeps_no_table_and_writes_the_same_files(tmp_path):
+    """``--quiet`` prints nothing and keeps no table (SceneWriter(table=False)); the files
+    are those of a run that prints."""
+    path = tmp_path / "scene.toml"
+    path.write_text(SHARED_X)
+    for name, extra in (("loud", ()), ("quiet", ("--quiet",))):
+        rc, stdout, err = run_cli("run", path, "--out", tmp_path / name, "--no-figures", *extra)
+        assert rc == 0, err
+        assert (stdout == "") == (name == "quiet")
+
+    def untimed(p):
+        return [line for line in p.read_text().splitlines() if '"timing_s"' not in line]
+    for f in ("result.json", "sweep.csv"):
+        assert untimed(tmp_path / "quiet" / f) == untimed(tmp_path / "loud" / f), f
+    s = parse_scene_text(SHARED_X)
+    with SceneWriter(s, tmp_path / "w", s.case_count, figures=False, table=False) as w:
+        assert w.summary is None
+        with pytest.raises(ValueError, match="table=False"):
+            w.table(0.0)
+
+
 def test_curve_csv_spooled_in_blocks(tmp_path, monkeypatch):
     """Cases buffered and read back a few at a time (a block smaller than the sweep) give
     the same CSV."""

@@ -16,6 +16,7 @@ import dataclasses
 import io
 import itertools
 import json
+from json.encoder import encode_basestring_ascii
 import math
 import os
 import shutil
@@ -89,9 +90,13 @@ class SceneWriter:
         How many cases will be added (``Scene.case_count``).
     figures : bool, optional
         Write the PNG figures; None: as the scene says.
+    table : bool
+        Keep the printed table's rows and extremes (:meth:`table`); False for a run that
+        prints none (``contact run --quiet``).
     """
 
-    def __init__(self, scene: Scene, out_dir, count: int, *, figures: bool | None = None):
+    def __init__(self, scene: Scene, out_dir, count: int, *, figures: bool | None = None,
+                 table: bool = True):
         self.scene, self.count = scene, count
         self.figures = scene.figures if figures is None else figures
         self.out = Path(out_dir)
@@ -99,7 +104,7 @@ class SceneWriter:
         self.out.mkdir(parents=True, exist_ok=True)
         self._spool = Path(tempfile.mkdtemp(prefix=".contact-writing-", dir=self.out))
         self._files = []
-        self.summary = TableSummary(scene, count)
+        self.summary = TableSummary(scene, count) if table else None
         self.curve_fields = [f for f in scene.fields if f in CURVE_FIELDS]
         try:
             self._json = self._open(ResultJson(scene, self._spool / "result.json"))
@@ -139,7 +144,8 @@ class SceneWriter:
             columns.add(res.index, res.label if self.scene.sweep else name, x, values)
         if self._maps is not None:
             self._maps.add(res)
-        self.summary.add(res)
+        if self.summary is not None:
+            self.summary.add(res)
         if self._added in self._drawn:              # the figures' cases, without their maps
             self._drawn_cases.append(dataclasses.replace(res, subsurface=None))
         if self._added in self._mapped:
@@ -148,6 +154,8 @@ class SceneWriter:
 
     def table(self, timing_s: float) -> str:
         """The printed table of the cases added (:func:`format_table`)."""
+        if self.summary is None:
+            raise ValueError("this SceneWriter was made with table=False: it kept no table")
         return self.summary.text(timing_s)
 
     def finish(self, timing_s: float, messages: list, *, progress: bool = False) -> list[Path]:
@@ -461,6 +469,26 @@ class SubsurfaceFiles:
 
 _CONTAINERS = frozenset((dict, list, tuple))
 _INDENT = "  "
+#: One encoder for every call (json.dumps with an option builds a new one each time).
+_ENCODE = json.JSONEncoder(allow_nan=False).encode
+_LITERALS = {None: "null", True: "true", False: "false"}
+
+
+def _json_scalar(v) -> str:
+    """json.dumps(v, allow_nan=False) for a number, string, bool or None, without its
+    per-call set-up (result.json has a dozen scalars per case)."""
+    t = type(v)
+    if t is float:
+        if not math.isfinite(v):
+            raise ValueError(f"Out of range float values are not JSON compliant: {v!r}")
+        return float.__repr__(v)
+    if t is int:
+        return int.__repr__(v)
+    if t is str:
+        return encode_basestring_ascii(v)
+    if t is bool or v is None:
+        return _LITERALS[v]
+    return _ENCODE(v)
 
 
 def dumps_json(obj, indent: str = _INDENT, _level: int = 0) -> str:
@@ -469,12 +497,12 @@ def dumps_json(obj, indent: str = _INDENT, _level: int = 0) -> str:
     if isinstance(obj, dict):
         if not obj:
             return "{}"
-        items = [f"{inner}{json.dumps(str(k))}: {dumps_json(v, indent, _level + 1)}"
+        items = [f"{inner}{encode_basestring_ascii(str(k))}: {dumps_json(v, indent, _level + 1)}"
                  for k, v in obj.items()]
         return "{\n" + ",\n".join(items) + "\n" + pad + "}"
     if isinstance(obj, (list, tuple)):
         if not _CONTAINERS.intersection(map(type, obj)):     # numbers (strings) only
-            return json.dumps(list(obj), allow_nan=False)
+            return "[" + ", ".join(map(_json_scalar, obj)) + "]"
         items = [inner + dumps_json(v, indent, _level + 1) for v in obj]
         return "[\n" + ",\n".join(items) + "\n" + pad + "]"
-    return json.dumps(obj, allow_nan=False)
+    return _json_scalar(obj)

@@ -520,17 +520,22 @@ class _Parser:
 
     # ---- checks that need the physics (cheap: no contact problem is solved) ----
     def check_cases(self, scene: Scene):
+        """Every speed of the sweep below the Rayleigh speed, and every punch of the sweep
+        buildable: each distinct value once (the punches: the product of the punch section's
+        swept keys), not once per case."""
         material = scene.material.build()
         c_R = contact.rayleigh_speed(material)
-        key = "motion.velocity" if "velocity" in scene.motion else "motion.speed"
-        for case in scene.iter_cases():
-            c = case.speed
+        by_velocity = "velocity" in scene.motion
+        key = "motion.velocity" if by_velocity else "motion.speed"
+        given = scene.motion[key.split(".")[1]]
+        for v in dict.fromkeys(given if isinstance(given, tuple) else (given,)):
+            c = material.relative_speed(v) if by_velocity else v
             if not c < c_R:
-                shown = (f"velocity = {case.inputs['velocity']!r} (relative speed c = {c!r})"
-                         if "velocity" in case.inputs else f"{c!r}")
+                shown = f"velocity = {v!r} (relative speed c = {c!r})" if by_velocity else f"{c!r}"
                 raise self.error(key, f"{shown} is not below the Rayleigh speed of this material, "
                                  f"c_R = {c_R!r}", f"0 <= speed < c_R = {c_R:.10g}")
-            self.check_punch(case.punch)
+        for spec in scene.punch_specs():
+            self.check_punch(spec)
 
     def check_punch(self, spec: PunchSpec):
         try:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -287,6 +288,13 @@ class Scene:
                 not 0 <= index < self.case_count:
             raise IndexError(f"case index must be in [0, {self.case_count}), got {index!r}")
         return self._case_at(int(index), self._swept())
+
+    def punch_specs(self) -> Iterator[PunchSpec]:
+        """Each punch of the sweep once: the product of the punch section's swept keys, in
+        scene order (a sweep over speed or friction alone has one)."""
+        keys = [key for sec, key in self.sweep if sec == "punch"]
+        for values in itertools.product(*(self.punch[k] for k in keys)):
+            yield _punch_spec({**self.punch, **dict(zip(keys, values))}, self.base_dir)
 
     def _swept(self):
         return [self._section(sec)[key] for sec, key in self.sweep]

@@ -83,11 +83,13 @@ class TableSummary:
     def _extremes(self, key: str, cell: str) -> None:
         """Keep ``cell`` as its column's smallest or largest when it is (cells that are not
         a finite number are passed over)."""
+        if key == "case":
+            return
         try:
             value = float(cell)
         except ValueError:
             return
-        if key == "case" or not math.isfinite(value):
+        if not math.isfinite(value):
             return
         if key not in self._lowest or value < self._lowest[key][0]:
             self._lowest[key] = (value, cell)

@@ -210,6 +210,11 @@ class SweepCsv:
 
 def _plain(v):
     """int, float or None (for NaN and missing values)."""
+    t = type(v)
+    if t is float:                             # most cells, first
+        return None if v != v else v
+    if t is int:
+        return v
     if v is None or isinstance(v, (bool, np.bool_)):
         return None if v is None else int(v)
     if isinstance(v, (int, np.integer)):
