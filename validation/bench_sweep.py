@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -130,6 +131,32 @@ def breakdown_rows(scene):
             for name, t in parts]
 
 
+def cli_rows(n_speed, n_friction):
+    """``contact run --quiet --jobs N`` end to end (a fresh process: start-up, solving and
+    writing result.json and sweep.csv), the best of 2 runs, against ``--jobs 1``: what a
+    user of the command sees, and where the parent, which writes every case, limits the
+    workers it can feed."""
+    cores = os.cpu_count() or 1
+    rows, t1 = [], None
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "sweep.toml"
+        path.write_text(sweep_toml(n_speed, n_friction))
+        for jobs in sorted({1, 2, 4, 8, 16, cores} & set(range(1, cores + 1))):
+            out = Path(tmp) / f"out{jobs}"
+
+            def run():
+                shutil.rmtree(out, ignore_errors=True)
+                return subprocess.run([sys.executable, "-m", "contact", "run", str(path),
+                                       "--out", str(out), "--quiet", "--jobs", str(jobs)],
+                                      capture_output=True, text=True).returncode
+            t, rc = _timed(run, 2)
+            t1 = t if jobs == 1 else t1
+            rows.append((f"`contact run --quiet --jobs {jobs}`"
+                         f"{'' if rc == 0 else f' (FAILED: exit status {rc})'}", t,
+                         f"{t1 / t:.2f}x --jobs 1", ""))
+    return rows
+
+
 #: Runs a command and prints the peak resident size, in kB, of the largest process it
 #: started (itself, or one of its workers): a fresh process per measurement, so that no other
 #: child of the benchmark counts.
@@ -181,6 +208,7 @@ def main(argv=None):
     scene = parse_scene_text(sweep_toml(20 if quick else 100, 20 if quick else 100),
                              source="<bench sweep>")
     rows = scaling_rows(scene)
+    rows += cli_rows(20 if quick else 100, 20 if quick else 100)
     if not quick:
         rows += memory_rows()
     lines = ["# sweep benchmarks", "",
