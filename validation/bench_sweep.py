@@ -7,6 +7,9 @@ shortest of ``REPEATS`` runs of each configuration after a warm-up run; each row
 ratio to the serial run of the same build, which varies less between machines than the time
 itself.
 
+Then ``contact run --quiet --jobs N`` end to end (start-up, solving, writing the outputs)
+for N up to the machine's cores: what a user of the command sees.
+
 Targets (issue "sweeps that scale"):
 
 * the process pool on N workers at >= 0.8 N of the serial speed, >= 1.7x on 2 cores;
