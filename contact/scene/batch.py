@@ -102,8 +102,9 @@ def worker_count(executor) -> int:
 
 class ChunkResults:
     """The [(index, result)] of one chunk as a single object on its way back: Dask serializes
-    a plain list (or tuple) element by element, which cost its client ~0.4 s of CPU for the
-    1e4 results of a cylinder sweep (against ~0.04 s to unpickle them in one piece)."""
+    a plain list (or tuple) element by element (measured on the 1e4 results of a cylinder
+    sweep: the client's IO loop spent 0.6 s of CPU on them, 0.5 s with this one piece; a
+    process pool pickles either in one piece)."""
     __slots__ = ("items",)
 
     def __init__(self, items):
