@@ -63,7 +63,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special as sp
 
-from .cauchy_kernels import basis_kernel, f0_points, series_kernel
+from .cauchy_kernels import basis_kernel, f0_points, series_forward_limit, series_kernel
 from .gaussjacobi import gauss_jacobi_cached
 from .special import jacobi_moment_shifted
 
@@ -206,13 +206,7 @@ def _forward_limit(n, c=None):
     cap = math.log(2.0)
     if c is None:
         return min(cap, math.log(_FORWARD_GROWTH) / max(n, 1))
-    mag = np.abs(c[1:])
-    top = max(float(np.abs(c).max()), np.finfo(float).tiny)
-    k = np.flatnonzero(mag > 0.0)
-    if k.size == 0:
-        return cap
-    lim = (math.log(_FORWARD_GROWTH) - np.log(mag[k] / top)) / (k + 1.0)
-    return min(cap, float(lim.min()))
+    return float(series_forward_limit(c, math.log(_FORWARD_GROWTH), cap))
 
 
 def cauchy_basis(n, wt: Weight, z, shifted=False, ends=None):

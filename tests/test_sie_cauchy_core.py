@@ -4,6 +4,8 @@ sqrt(1 - t^2)."""
 import mpmath as mp
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import sie
 
@@ -169,3 +171,24 @@ def test_l0_next_to_a_singular_left_end(x):
         ref = float((left + right) / mp.pi)
     got = float(l0(Weight.plain(al, be), np.array([x]))[0])
     assert abs(got - ref) <= 2e-14 * max(1.0, abs(ref)), (got, ref)
+
+
+# --------------------------------------------------------------------------
+# the forward-recurrence limit of a series
+# --------------------------------------------------------------------------
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.floats(-1e3, 1e3) | st.just(0.0), min_size=1, max_size=40))
+def test_series_forward_limit_is_the_stated_bound(coefficients):
+    """The compiled limit equals its definition: min(log 2, min over k >= 1, c_k != 0, of
+    (log 30 - log(|c_k| / max|c|)) / k), written here with numpy; for it, every term
+    |c_k| |rho|^k stays within 30 max|c|."""
+    import math
+    from sie.cauchy import _forward_limit
+    c = np.array(coefficients)
+    top = max(float(np.abs(c).max()), np.finfo(float).tiny)
+    k = np.flatnonzero(c[1:] != 0.0) + 1
+    want = min([math.log(2.0)] + list((math.log(30.0) - np.log(np.abs(c[k]) / top)) / k))
+    got = _forward_limit(c.size, c)
+    assert got == pytest.approx(want, rel=1e-15, abs=1e-300)
+    rho = math.exp(got)
+    assert all(abs(ck) * rho ** j <= 30.0 * top * (1 + 1e-12) for j, ck in enumerate(c))
