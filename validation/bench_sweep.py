@@ -134,6 +134,12 @@ def breakdown_rows(scene):
             for name, t in parts]
 
 
+def _contact_run(path, out, jobs) -> list:
+    """The command line of ``contact run --quiet`` on a scene file, in this Python."""
+    return [sys.executable, "-m", "contact", "run", str(path), "--out", str(out), "--quiet",
+            "--jobs", str(jobs)]
+
+
 def cli_rows(n_speed, n_friction):
     """``contact run --quiet --jobs N`` end to end (a fresh process: start-up, solving and
     writing result.json and sweep.csv), the best of 2 runs, against ``--jobs 1``: what a
@@ -149,9 +155,8 @@ def cli_rows(n_speed, n_friction):
 
             def run():
                 shutil.rmtree(out, ignore_errors=True)
-                return subprocess.run([sys.executable, "-m", "contact", "run", str(path),
-                                       "--out", str(out), "--quiet", "--jobs", str(jobs)],
-                                      capture_output=True, text=True).returncode
+                return subprocess.run(_contact_run(path, out, jobs), capture_output=True,
+                                      text=True).returncode
             t, rc = _timed(run, 2)
             t1 = t if jobs == 1 else t1
             rows.append((f"`contact run --quiet --jobs {jobs}`"
@@ -177,9 +182,8 @@ def memory_run(n_speed, n_friction, jobs=0):
         path.write_text(sweep_toml(n_speed, n_friction, ("ends", "exponents")))
         out = Path(tmp) / "out"
         t0 = time.perf_counter()
-        proc = subprocess.run([sys.executable, "-c", _PEAK_RSS, sys.executable, "-m",
-                               "contact", "run", str(path), "--out", str(out), "--quiet",
-                               "--jobs", str(jobs)], capture_output=True, text=True)
+        proc = subprocess.run([sys.executable, "-c", _PEAK_RSS, *_contact_run(path, out, jobs)],
+                              capture_output=True, text=True)
         t = time.perf_counter() - t0
         rc, peak_kb = (int(v) for v in proc.stdout.split())
         files = sorted(p.name for p in out.glob("*"))

@@ -110,12 +110,6 @@ class ChunkResults:
     def __init__(self, items):
         self.items = items
 
-    def __getstate__(self):
-        return self.items
-
-    def __setstate__(self, items):
-        self.items = items
-
 
 def run_range(fn, source, start: int, stop: int) -> ChunkResults:
     """:func:`run_chunk` on the cases ``start`` <= index < ``stop`` of ``source`` (a

@@ -526,8 +526,8 @@ class _Parser:
         material = scene.material.build()
         c_R = contact.rayleigh_speed(material)
         by_velocity = "velocity" in scene.motion
-        key = "motion.velocity" if by_velocity else "motion.speed"
-        given = scene.motion[key.split(".")[1]]
+        name = "velocity" if by_velocity else "speed"
+        key, given = f"motion.{name}", scene.motion[name]
         for v in dict.fromkeys(given if isinstance(given, tuple) else (given,)):
             c = material.relative_speed(v) if by_velocity else v
             if not c < c_R:
