@@ -16,14 +16,14 @@ from .material import Isotropic, Orthotropic, zhou2014
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
 from .result import ContactZone, LoadCurve
-from .solver import ContactResult, contact_length, load_curve, solve
+from .solver import ContactResult, contact_length, load_curve, solve, solve_batch
 from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 
 __all__ = [
     "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
-    "solve", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "contact_length",
+    "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "contact_length",
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
     "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",

@@ -15,23 +15,27 @@ is the side condition.  Index 0 (one corner): the free end is the root of load(L
 """
 from __future__ import annotations
 
+import functools
 import warnings
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
+
+import sie
 
 from sie.assembly import N_MAX_DENSE
 
 from .constants import SurfaceConstants, surface_constants
 from .continuation import ZoneState, follow_load, inspect_state
+from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
                      check_finite)
 from .material import Orthotropic
 from .punches import Punch
-from .result import ContactResult, ContactZone, LoadCurve, _ClosedFormContactResult
-from .zones import ZoneEquations
+from .result import ContactResult, ContactZone, LoadCurve, _ClosedFormContactResult, _sif
+from .zones import CORNER, ZoneEquations
 
-__all__ = ["solve", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
+__all__ = ["solve", "solve_batch", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
 
 _N_DEFAULT = 12
 _N_FOLLOW = 512    # the continuation raises n up to here to resolve its states (adaptive n)
@@ -166,9 +170,220 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     if method == "closed_form":
         return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f,
                                    material)
-    curve = _numeric(const, punch, [load], float(speed), friction, direction, mu_f, n, tol,
-                     material)
-    return curve.results[0]
+    return _numeric_cases(material, punch, [_Case(const, load, float(speed), friction,
+                                                  direction, mu_f)], n, tol)[0]
+
+
+def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
+                method="numeric", n=None, tol=1e-12, constants=None, residual=False,
+                errors="raise"):
+    """:func:`solve` for many cases of one material and punch at once.
+
+    ``load``, ``speed``, ``friction`` and ``direction`` broadcast against each other (numpy
+    rules); each element of the broadcast is a case.  The cases go through the first step
+    of the load continuation together (:mod:`contact.lockstep`: each stage one vectorised
+    call for all of them); a case that step cannot finish (an event on the way, a face that
+    needs Newton's method or a larger n) is solved alone.  Either way each result is what
+    :func:`solve` returns for that case -- which goes the same way, as a batch of one.
+
+    Parameters
+    ----------
+    material, punch, method, n, tol
+        As for :func:`solve`, shared by all cases.
+    load, speed, friction, direction : float or array_like
+        Per case, broadcast together.
+    constants : sequence of SurfaceConstants, optional
+        One per case (``surface_constants(material, speed)`` of its speed), computed
+        beforehand; by default computed once for each distinct speed.
+    residual : bool
+        Compute each result's ``residual`` diagnostic now, for all cases in one vectorised
+        pass (otherwise on first access, case by case).
+    errors : {"raise", "return"}
+        "raise": the first case with inputs outside what is allowed (or whose contact cannot
+        be found) raises, as :func:`solve` would.  "return": that case's exception takes its
+        place in the output, and the other cases are solved.
+
+    Returns
+    -------
+    list of ContactResult
+        One per case, in the C order of the broadcast shape.
+
+    Raises
+    ------
+    ContactInputError
+        (or a subclass) as for :func:`solve`, for the first case at fault (``errors="raise"``);
+        also for arguments that do not broadcast, ``constants`` of the wrong length, or an
+        ``errors`` other than "raise" or "return".
+
+    References
+    ----------
+    As for :func:`solve`.
+
+    Examples
+    --------
+    Three frictions of a cylinder sliding at 0.6: the trailing (right) exponent falls as the
+    friction grows.
+
+    >>> import contact
+    >>> rs = contact.solve_batch(contact.zhou2014(), contact.CylindricalPunch(radius=100.0),
+    ...                          load=0.01, speed=0.6, friction=[0.0, 0.2, 0.4])
+    >>> [round(r.alpha, 6) for r in rs]
+    [0.5, 0.489798, 0.479616]
+    >>> r = contact.solve(contact.zhou2014(), contact.CylindricalPunch(radius=100.0),
+    ...                   load=0.01, speed=0.6, friction=0.2)
+    >>> r.ends == rs[1].ends
+    True
+    """
+    if errors not in ("raise", "return"):
+        raise ContactInputError(f'errors must be "raise" or "return", got {errors!r}')
+    try:
+        P, V, M, D = np.broadcast_arrays(*(np.asarray(v, dtype=object)
+                                           for v in (load, speed, friction, direction)))
+    except ValueError:
+        raise ContactInputError(
+            "load, speed, friction and direction must broadcast against each other, got "
+            f"shapes {[np.shape(v) for v in (load, speed, friction, direction)]}") from None
+    count = P.size
+    if constants is not None and (isinstance(constants, SurfaceConstants)
+                                  or not hasattr(constants, "__len__")):
+        raise ContactInputError("constants must be a sequence of SurfaceConstants, one per "
+                                f"case, or None; got {type(constants).__name__}")
+    if constants is not None and len(constants) != count:
+        raise ContactInputError(f"constants must hold one SurfaceConstants per case "
+                                f"({count}), got {len(constants)}")
+    cases, out = [], [None] * count
+    shared = {}
+    for i, (Pi, Vi, Mi, Di) in enumerate(zip(P.ravel().tolist(), V.ravel().tolist(),
+                                             M.ravel().tolist(), D.ravel().tolist())):
+        try:
+            Pi, Mi, Di, _ = _check_inputs(material, punch, Pi, Vi, Mi, Di, method, n, tol)
+            if constants is not None:
+                const = _surface_constants(material, Vi, constants[i])
+            else:
+                key = check_finite("speed", Vi, ContactInputError)
+                const = shared.get(key)
+                if const is None:
+                    const = shared[key] = surface_constants(material, Vi)
+            mu_f = -Di * Mi if Mi != 0.0 else 0.0
+            if method == "closed_form":
+                out[i] = _closed_form_result(const, punch, Pi, float(Vi), Mi, Di, mu_f,
+                                             material)
+                continue
+        except ContactInputError as exc:
+            if errors == "raise":
+                raise
+            out[i] = exc
+            continue
+        cases.append((i, _Case(const, Pi, float(Vi), Mi, Di, mu_f)))
+    if cases:
+        solved = _numeric_cases(material, punch, [c for _, c in cases], n, tol,
+                                errors=errors, residual=residual)
+        for (i, _), r in zip(cases, solved):
+            out[i] = r
+    return out
+
+
+@dataclass(frozen=True)
+class _Case:
+    """One case of :func:`_numeric_cases`: its surface constants and inputs (checked)."""
+    const: SurfaceConstants
+    load: float
+    speed: float
+    friction: float
+    direction: int
+    mu_f: float
+
+
+def _basis_choice(punch, n):
+    """(n, adaptive): a polynomial slope of degree d is exact with d + 4 coefficients (the
+    projection with n - kappa > d terms is exact, so phi, of degree <= d + 1, is too); else
+    the given n, or the adaptive start."""
+    if n is None and punch.slope_degree is not None:
+        return punch.slope_degree + 4, False
+    return (n if n is not None else _N_DEFAULT), n is None
+
+
+def _numeric_cases(material, punch, cases, n, tol, errors="raise", residual=False):
+    """ContactResult of each case (one load each): the lockstep first step for those it
+    finishes (:mod:`contact.lockstep`), the full continuation for the others; with
+    ``errors="return"`` a library error (ContactLossError, a face without a lowest point...)
+    takes its case's place."""
+    n_use, adaptive = _basis_choice(punch, n)
+    out = [None] * len(cases)
+    steps = None
+    if not adaptive:
+        try:
+            steps = first_steps(punch.as_face(), punch.slope, tuple(punch.breaks),
+                                [c.const.N12 * c.mu_f if c.mu_f != 0.0 else 0.0 for c in cases],
+                                [c.const.N11 for c in cases], [c.load for c in cases], n_use)
+        except (ContactInputError, sie.SIEInputError):
+            steps = None        # each case alone below: each raises (or returns) its error
+        if steps is not None and steps.done.size:
+            for i, r in zip(steps.done.tolist(),
+                            _lockstep_results(material, punch, cases, steps, residual)):
+                out[i] = r
+    for i, c in enumerate(out):
+        if c is not None:
+            continue
+        c = cases[i]
+        try:
+            out[i] = _numeric(c.const, punch, [c.load], c.speed, c.friction, c.direction,
+                              c.mu_f, n, tol, material).results[0]
+        except (ContactInputError, sie.SIEInputError) as exc:
+            if errors == "raise":
+                raise
+            out[i] = exc
+    return out
+
+
+def _lockstep_results(material, punch, cases, steps, residual):
+    """The ContactResult of each case the lockstep step finished."""
+    sols, kinds = steps.solutions, steps.kinds
+    loads = sols.integral()
+    phi_ends = sols.phi_local(np.array([-1.0, 1.0])) if CORNER in kinds else None
+    done = [cases[i] for i in steps.done.tolist()]
+    res = _residuals(sols, punch, done) if residual else [None] * len(sols)
+    out = []
+    for k, i in enumerate(steps.done.tolist()):
+        c = cases[i]
+        ends = tuple(sols.intervals[k].tolist())
+        alpha, beta = float(sols.alpha[k]), float(sols.beta[k])
+        sif = {} if phi_ends is None else _sif(lambda e, k=k: float(phi_ends[k, (e + 1) // 2]),
+                                               ends, kinds, alpha, beta)
+        zone = ContactZone(ends, kinds, alpha, beta, sols.kappa, float(loads[k]), sif)
+        out.append(ContactResult(
+            zones=(zone,), n=sols.n, load_check=abs(float(loads[k]) - c.load) / c.load,
+            constants=c.const, load=c.load, speed=c.speed, friction=c.friction,
+            direction=c.direction, mu_f=c.mu_f, punch=punch, method="numeric",
+            solution=sols[k], material=material, _residual=res[k],
+            _residual_source=functools.partial(_residual_alone, sols, k, punch, c)))
+    return out
+
+
+def _residual_alone(sols, k, punch, case):
+    """The residual of solution k of a batch, as :func:`_residuals` gives it in the batch
+    (each row of that computation is its own: the same value either way)."""
+    return _residuals(sols.take([k]), punch, [case])[0]
+
+
+def _residuals(sols, punch, cases):
+    """:attr:`ContactResult.residual` of each solution of a batch, in one pass (the same
+    check points and scale as :func:`contact.result._residual_of`)."""
+    u = _RESIDUAL_U
+    iv = sols.intervals
+    X = 0.5 * (iv[:, :1] + iv[:, 1:]) + 0.5 * (iv[:, 1:] - iv[:, :1]) * u
+    f = punch.slope(X.ravel()).reshape(X.shape)
+    F = sols.cauchy_limit_local(u)
+    N11 = np.array([c.const.N11 for c in cases])[:, None]
+    a = np.array([c.const.N12 * c.mu_f for c in cases])[:, None]
+    psi, hc = F.imag, N11 * F.real
+    scale = np.maximum.reduce([np.max(np.abs(f), axis=1), np.max(np.abs(hc), axis=1),
+                               np.abs(N11[:, 0]) * np.max(np.abs(psi), axis=1),
+                               np.full(len(cases), np.finfo(float).tiny)])
+    return (np.max(np.abs(a * psi + hc - f), axis=1) / scale).tolist()
+
+
+_RESIDUAL_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
 
 
 def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=None,
@@ -238,12 +453,7 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
 def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, material):
     """The numeric path: the zones along the loads, refined in n at each load."""
     a = const.N12 * mu_f if mu_f != 0.0 else 0.0        # no friction terms at mu = 0
-    if n is None and punch.slope_degree is not None:
-        # polynomial right-hand side of degree d: the projection with n - kappa > d terms is
-        # exact, so phi (degree <= d + 1) is too; no doubling needed
-        n_use, adaptive = punch.slope_degree + 4, False
-    else:
-        n_use, adaptive = (n if n is not None else _N_DEFAULT), n is None
+    n_use, adaptive = _basis_choice(punch, n)
     face = punch.as_face()
     eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
                        b=const.N11, load=loads[0], n=n_use,

@@ -19,6 +19,7 @@ References: Erdogan, Gupta & Cook (1973); Krenk, Quart. Appl. Math. 33 (1975) 22
 Muskhelishvili, Singular Integral Equations (1953); Hale & Townsend, SIAM J. Sci. Comput. 35
 (2013) A652 (the quadrature); see the documentation, Theory: the singular integral equation.
 """
+from .batch import DominantBatch, FunctionalsBatch, SolutionBatch, functionals_batch, solve_batch
 from .cauchy import jacobi_cauchy
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
                      InvalidBreakpointError, InvalidCoefficientError, InvalidEndConditionError,
@@ -45,6 +46,7 @@ __all__ = [
     "gauss_jacobi", "solve", "Solution", "IntervalSolution", "sie_exponents", "Exponents",
     "jacobi_cauchy", "N_MAX",
     "dominant_functionals", "Functionals", "FunctionalsRule",
+    "DominantBatch", "solve_batch", "SolutionBatch", "functionals_batch", "FunctionalsBatch",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",

@@ -15,7 +15,9 @@ __all__ = ["warm_up"]
 def warm_up() -> None:
     """Exercise each compiled kernel once: Gauss-Jacobi on every rung of its ladder (large
     exponents included), solve for every index, with a kernel, with breaks and on two
-    intervals, Cauchy transforms at real and complex points, the log potential."""
+    intervals, Cauchy transforms at real and complex points, the log potential, and a batch
+    of one-interval equations (:class:`sie.DominantBatch`)."""
+    from .batch import DominantBatch
     from .gaussjacobi import gauss_jacobi
     from .solver import solve
     for n in (1, 30, 300):
@@ -39,6 +41,11 @@ def warm_up() -> None:
         sol.cauchy(np.array([0.2, 1.5]))
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
+        eqs = DominantBatch(a=[0.7, -0.3], b=1.0, n=5, left="bounded", right="bounded")
+        eqs.functionals(f, [(-1.0, 1.0), (0.0, 2.0)])
+        batch = eqs.solve(f, [(-1.0, 1.0), (0.0, 2.0)])
+        batch.phi_local(np.array([0.1]))
+        batch.cauchy_limit_local(np.array([0.1]))
 
 
 if __name__ == "__main__":

@@ -162,18 +162,18 @@ def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
 # --------------------------------------------------------------------------
 # progress bar
 # --------------------------------------------------------------------------
-def _slow(run_case, delay):
+def _slow(run_cases, delay):
     import time
 
-    def slow_run_case(case):
-        time.sleep(delay)
-        return run_case(case)
-    return slow_run_case
+    def slow_run_cases(cases):
+        time.sleep(delay * len(cases))
+        return run_cases(cases)
+    return slow_run_cases
 
 
 def test_progress_bar_on_a_slow_sweep_and_quiet_turns_it_off(monkeypatch, capsys, tmp_path):
     import contact.scene as scene_module
-    monkeypatch.setattr(scene_module.run, "run_case", _slow(scene_module.run.run_case, 0.45))
+    monkeypatch.setattr(scene_module.run, "run_cases", _slow(scene_module.run.run_cases, 0.45))
     assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "a")]) == 0
     assert "cases" in capsys.readouterr().err                 # tqdm's bar, after ~1 s
     assert cli.main(["run", str(SWEEP), "--out", str(tmp_path / "b"), "--quiet"]) == 0

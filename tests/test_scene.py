@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import textwrap
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -341,6 +342,23 @@ def counter(monkeypatch, owner, name):
     return calls
 
 
+def case_counter(monkeypatch):
+    """Wrap contact.solve_batch (how a scene solves its cases) to record each case it
+    solves; return the list of their loads."""
+    calls = []
+    original = contact.solve_batch
+
+    def wrapper(*args, **kwargs):
+        calls.extend(np.broadcast_to(np.asarray(kwargs["load"], dtype=float),
+                                     np.broadcast(*(np.asarray(kwargs[k], dtype=object) for k in
+                                                    ("load", "speed", "friction",
+                                                     "direction"))).shape).ravel())
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(contact, "solve_batch", wrapper)
+    return calls
+
+
 def sweep_scene(kind_dim, fields, friction="[0.0, 0.3]", speed="[0.3, 0.6]"):
     return scene(HEAD + f"""
         [punch]
@@ -359,7 +377,7 @@ def sweep_scene(kind_dim, fields, friction="[0.0, 0.3]", speed="[0.3, 0.6]"):
 def counts(monkeypatch):
     R = contact.ContactResult
     return {
-        "solve": counter(monkeypatch, contact, "solve"),
+        "solve": case_counter(monkeypatch),
         "pressure": counter(monkeypatch, R, "pressure"),
         "shear": counter(monkeypatch, R, "shear"),
         "sigma_xx": counter(monkeypatch, R, "sigma_xx"),
@@ -481,6 +499,23 @@ def test_near_rayleigh_warning_is_collected_not_printed(recwarn):
     res = run_scene(s)
     assert any("NearRayleighWarning" in w for w in res.warnings)
     assert not [w for w in recwarn if issubclass(w.category, contact.NearRayleighWarning)]
+
+
+def test_a_warning_in_a_batch_is_reported_with_its_case(monkeypatch):
+    """Cases are solved together (contact.solve_batch); a warning raised while solving one
+    of them is reported with that case alone (the batch is solved again case by case)."""
+    original = contact.solve_batch
+
+    def warns_at_friction_02(*args, **kwargs):
+        for f in np.atleast_1d(kwargs["friction"]):
+            if f == 0.2:
+                warnings.warn("solving friction 0.2", RuntimeWarning)
+        return original(*args, **kwargs)
+    monkeypatch.setattr(contact, "solve_batch", warns_at_friction_02)
+    res = run_scene(scene(CYL + "[motion]\nload = 0.01\nfriction = [0.0, 0.1, 0.2, 0.3]\n"))
+    assert [c.warnings for c in res.cases] == [[], [], ["RuntimeWarning: solving friction 0.2"],
+                                               []]
+    assert res.warnings == ["case 2 (friction = 0.2): RuntimeWarning: solving friction 0.2"]
 
 
 # --------------------------------------------------------------------------

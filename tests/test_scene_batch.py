@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import time
 from collections import namedtuple
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 
@@ -38,11 +39,16 @@ def fake_cases(n, speeds=(0.0, 0.3)):
                       for i in range(n))
 
 
-def double_or_fail(case):
-    """Fails like the library for cases 5 and 9."""
-    if case.index in (5, 9):
-        raise contact.LoadError(f"case {case.index} fails")
-    return 2 * case.index
+def indices(cases):
+    """A chunk function (what run_cases is to a scene): each case's index."""
+    return [case.index for case in cases]
+
+
+def double_or_fail(cases):
+    """A chunk function: twice each index, and the library's error in place of cases 5 and
+    9 (as run_cases returns a failing case)."""
+    return [contact.LoadError(f"case {c.index} fails") if c.index in (5, 9) else 2 * c.index
+            for c in cases]
 
 
 def test_chunk_size_targets_the_time_and_the_balance():
@@ -62,8 +68,9 @@ def test_chunks_are_consecutive_ranges_built_by_the_worker(monkeypatch):
     chunk_size cases, shorter toward the end (tail_size); each worker builds its cases from
     the source."""
     monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
+    monkeypatch.setattr(batch, "_PROBE", 3)
     ex = _InlineExecutor()
-    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(30), ex, lambda k: None))
+    got = list(batch.iter_chunked(indices, fake_cases(30), ex, lambda k: None))
     # 27 left on 2 workers: 4 while ceil(left / 4) >= 4 (27, 23, 19, 15 left), then
     # ceil(left / 4): 11 -> 3, 8 -> 2, 6 -> 2, then one at a time
     assert ex.ranges == [(3, 7), (7, 11), (11, 15), (15, 19), (19, 22), (22, 24), (24, 26),
@@ -162,8 +169,33 @@ def test_progress_counts_cases():
     counted = []
     cases = fake_cases(12)
     with ThreadPoolExecutor(2) as ex:
-        list(batch.iter_chunked(lambda c: c.index, cases, ex, counted.append))
+        list(batch.iter_chunked(indices, cases, ex, counted.append))
     assert sum(counted) == 12
+
+
+def test_serial_runs_chunks_of_cases(monkeypatch):
+    """Without an executor the cases still go to the chunk function in chunks (solved
+    together): _PROBE first, then as many as TARGET_CHUNK_S of work holds, SERIAL_CHUNK at
+    most; delivered in order."""
+    monkeypatch.setattr(batch, "SERIAL_CHUNK", 7)
+    monkeypatch.setattr(batch, "_PROBE", 3)
+    seen = []
+
+    def record(cases):
+        seen.append([c.index for c in cases])
+        return indices(cases)
+    got = list(batch.iter_chunked(record, fake_cases(20), None, lambda k: None))
+    assert got == [(i, i) for i in range(20)]
+    assert seen == [[0, 1, 2], list(range(3, 10)), list(range(10, 17)), [17, 18, 19]]
+    # slow cases: chunks of one, the progress moves with each case
+    seen.clear()
+
+    def slow(cases):                        # a case takes as long as a chunk should
+        time.sleep(batch.TARGET_CHUNK_S * len(cases))
+        return record(cases)
+    monkeypatch.setattr(batch, "TARGET_CHUNK_S", 0.01)
+    list(batch.iter_chunked(slow, fake_cases(6), None, lambda k: None))
+    assert [len(c) for c in seen] == [3, 1, 1, 1]
 
 
 def test_worker_count():
@@ -277,6 +309,6 @@ def test_every_case_delivered_when_the_window_empties_at_once(monkeypatch):
     to the end of the sweep instead of stopping at the first window."""
     monkeypatch.setattr(batch, "chunk_size", lambda n, workers, per_case: 4)
     monkeypatch.setattr(batch, "CHUNKS_AHEAD", 1)
-    got = list(batch.iter_chunked(lambda c: c.index, fake_cases(100, speeds=(0.0,)),
+    got = list(batch.iter_chunked(indices, fake_cases(100, speeds=(0.0,)),
                                   _InlineExecutor(), lambda k: None))
     assert got == [(i, i) for i in range(100)]

@@ -1,7 +1,7 @@
 """Running a scene's cases in chunks: in this process, in a process pool or on a Dask cluster.
 
 One task per case costs more than the case when the case is cheap (a cylindrical punch solves
-in ~0.5 ms; a Dask task costs 5-25 ms of CPU between the scheduler, the client and the worker
+in ~0.1 ms within a chunk, ~0.3 ms alone; a Dask task costs 5-25 ms of CPU between the scheduler, the client and the worker
 on a loaded 2-core machine, a process-pool task ~0.1 ms plus pickling).  Cases therefore
 travel in chunks, and a chunk travels as a range of case indices with the scene they come
 from: the worker builds its cases itself (:meth:`contact.scene.spec.Scene.iter_cases`), so
@@ -13,7 +13,7 @@ are
   material and a punch once per distinct spec (:func:`build_once`), so a chunk need not be
   cut where the speed changes;
 * sized to the work: a chunk holds about ``TARGET_CHUNK_S`` of solving, estimated from the
-  first cases (solved in this process first), and there are at least ``CHUNKS_PER_WORKER``
+  first chunk (solved in this process first), and there are at least ``CHUNKS_PER_WORKER``
   chunks per worker so that a slow chunk does not leave the others idle.
 
 Results come back in scene order (:func:`iter_chunked`), so that a sweep runs in memory that
@@ -40,8 +40,11 @@ CHUNKS_PER_WORKER = 4
 TAIL_SPLIT = 2
 #: Full chunks per worker handed out past the first case not yet delivered.
 CHUNKS_AHEAD = 8
-#: Cases solved here first, to size the chunks (the fastest of them counts).
-_PROBE = 3
+#: Cases solved here first, as one chunk, to size the chunks of an executor.
+_PROBE = 16
+#: Most cases per chunk without an executor (solved together, delivered in order): a sweep
+#: of any length runs in memory for this many results.
+SERIAL_CHUNK = 256
 
 
 @functools.lru_cache(maxsize=64)
@@ -59,22 +62,12 @@ def build_once(spec):
 
 
 def run_chunk(fn, cases):
-    """[(index, fn(case) or its exception)] for each case, in order.
-
-    A library input error (contact.ContactInputError, sie.SIEInputError) is returned in place
-    of the result, so that the caller can report the first failing case in scene order;
-    anything else propagates.
-    """
-    import contact
-    import sie
-    out = []
-    for case in cases:
-        try:
-            res = fn(case)
-        except (contact.ContactInputError, sie.SIEInputError) as exc:
-            res = exc
-        out.append((case.index, res))
-    return out
+    """[(index, result)] for the cases, in order: ``fn(cases)`` (a list of them) gives one
+    result per case, a case's library input error (contact.ContactInputError,
+    sie.SIEInputError) in place of its result, so that the caller can report the first
+    failing case in scene order."""
+    cases = list(cases)
+    return list(zip([case.index for case in cases], fn(cases)))
 
 
 def chunk_size(n_cases, workers, seconds_per_case):
@@ -118,13 +111,17 @@ def run_range(fn, source, start: int, stop: int) -> ChunkResults:
 
 
 def iter_chunked(fn, source, executor, on_done):
-    """(index, fn(case) or its exception) for each case of ``source``, in its order, ending
-    after the first exception (a library input error, see :func:`run_chunk`).
+    """(index, result or its exception) for each case of ``source``, in its order, ending
+    after the first exception (a library input error, see :func:`run_chunk`); ``fn`` solves
+    a list of cases (:func:`contact.scene.run.run_cases`).
 
     ``source`` is a :class:`~contact.scene.spec.Scene` (anything with ``case_count`` and
     ``iter_cases(start, stop)``, picklable when ``executor`` runs elsewhere).  ``executor``
-    None (or fewer than two cases): every case here, one after the other.  Otherwise the
-    first three cases run here (the fastest sizes the chunks: :func:`chunk_size`), the rest
+    None (or fewer than two cases): every case here, in chunks of about ``TARGET_CHUNK_S``
+    of work (sized from the chunk before; ``_PROBE`` cases first, ``SERIAL_CHUNK`` at most:
+    the progress moves a few times a second).  Otherwise
+    the first ``_PROBE`` cases run here as one chunk (their time sizes the chunks:
+    :func:`chunk_size`), the rest
     go to ``executor`` as ranges of indices (:func:`run_range`), at most ``CHUNKS_AHEAD``
     full chunks per worker past the first case not yet delivered.  Once a case fails, the
     chunks after it are cancelled and those before it awaited.  ``on_done(k)`` is called as
@@ -132,32 +129,42 @@ def iter_chunked(fn, source, executor, on_done):
     """
     total = source.case_count
     if executor is None or total < 2:
-        for case in source.iter_cases():
-            res = _run_here(fn, case, on_done)
-            yield case.index, res
-            if isinstance(res, Exception):
+        start, size = 0, _PROBE
+        while start < total:
+            stop = min(total, start + size)
+            t0 = time.perf_counter()
+            items = _run_here(fn, source, start, stop, on_done)
+            per_case = (time.perf_counter() - t0) / (stop - start)
+            if (yield from _deliver(items)):
                 return
+            size = max(1, min(SERIAL_CHUNK, int(TARGET_CHUNK_S / max(per_case, 1e-6))))
+            start = stop
         return
-    per_case = math.inf
     probe = min(_PROBE, total)
-    for case in source.iter_cases(0, probe):      # the first is slower (caches fill)
-        t0 = time.perf_counter()
-        res = _run_here(fn, case, on_done)
-        per_case = min(per_case, time.perf_counter() - t0)
-        yield case.index, res
-        if isinstance(res, Exception):
-            return
+    t0 = time.perf_counter()
+    if (yield from _deliver(_run_here(fn, source, 0, probe, on_done))):
+        return
+    per_case = (time.perf_counter() - t0) / probe
     workers = worker_count(executor)
     size = chunk_size(max(total - probe, 1), workers, per_case)
     yield from _windowed(fn, source, executor, probe, total, size, workers,
                          CHUNKS_AHEAD * workers * size, on_done)
 
 
-def _run_here(fn, case, on_done):
-    """fn(case) or its library input error, in this process."""
-    ((_, res),) = run_chunk(fn, [case])
-    on_done(1)
-    return res
+def _run_here(fn, source, start, stop, on_done):
+    """:func:`run_chunk` on cases ``start`` <= index < ``stop``, in this process."""
+    items = run_chunk(fn, source.iter_cases(start, stop))
+    on_done(len(items))
+    return items
+
+
+def _deliver(items):
+    """Yield (index, result) up to the first failure; return whether there was one."""
+    for index, res in items:
+        yield index, res
+        if isinstance(res, Exception):
+            return True
+    return False
 
 
 def tail_size(size: int, left: int, workers: int) -> int:

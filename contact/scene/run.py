@@ -1,7 +1,9 @@
-"""Running scenes: one case at a time, in order, serially or through any Executor."""
+"""Running scenes: cases in chunks, solved together where they share the material, the
+punch and the numerics, delivered in order, serially or through any Executor."""
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import sys
 import time
@@ -172,46 +174,129 @@ def _shared_constants(material, speed):
     return contact.surface_constants(material, speed)
 
 
+def run_cases(cases) -> list:
+    """Solve a run of cases and compute the requested per-case fields of each (not
+    roots/constants, which :func:`run_scene` computes once per speed): what a worker runs
+    for a chunk.  Consecutive cases that share the material, the punch and the numerics
+    are solved together (:func:`contact.solve_batch`: the first step of the continuation in
+    lockstep, one vectorised call per stage).
+
+    Returns
+    -------
+    list
+        Per case, in order, its :class:`CaseResult`, or the library input error
+        (contact.ContactInputError, sie.SIEInputError, ContactLossError included) that
+        solving or sampling it raised.  A case's ``time_s`` is its share of its group's solve
+        plus its own fields.
+    """
+    out = []
+    for _, group in itertools.groupby(cases, key=_batch_key):
+        out += _run_group(list(group))
+    return out
+
+
 def run_case(case: Case) -> CaseResult:
-    """Solve one case and compute its requested per-case fields (not roots/constants, which
-    :func:`run_scene` computes once per speed).  Runs in a worker process or Dask worker."""
+    """Solve one case (:func:`run_cases` of one), raising its library error."""
+    (res,) = run_cases([case])
+    if isinstance(res, Exception):
+        raise res
+    return res
+
+
+def _batch_key(case):
+    """What the cases solved together share."""
+    return case.material, case.punch, case.numerics
+
+
+def _run_group(group) -> list:
+    """:func:`run_cases` on cases of one batch key.  The solve of the group records its
+    warnings; where it has any, each case is solved again alone, so that every warning is
+    reported with the case it belongs to."""
     t0 = time.perf_counter()
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        material = build_once(case.material)
-        result = contact.solve(material, build_once(case.punch),
-                               load=case.inputs["load"], speed=case.speed,
-                               friction=case.inputs["friction"],
-                               direction=case.inputs["direction"], method=case.numerics.method,
-                               n=case.numerics.n, tol=case.numerics.tol,
-                               constants=_shared_constants(material, case.speed))
-        entry = {"inputs": dict(case.inputs)}
-        several = len(result.zones) > 1
-        with_sif = "sif" in case.fields
-        X = None
-        stress_map = None
-        for name in case.fields:
-            if name == "zones" or (several and name in ZONE_FIELDS):
-                if "zones" not in entry:
-                    entry["zones"] = [zone_entry(z, with_sif) for z in result.zones]
-            elif name == "ends":
-                entry["ends"] = [result.ends[0], result.ends[1]]
-            elif name == "exponents":
-                entry["exponents"] = {"left": result.beta, "right": result.alpha}
-            elif name == "sif":
-                entry["sif"] = dict(result.sif)
-            elif name in CURVE_FIELDS:
-                if X is None:
-                    X = case.x.points() if case.x is not None else _auto_x(result)
-                entry[name] = {"x": X, "values": _sample(result, name, X)}
-            elif name == "subsurface":
-                entry[name], stress_map = subsurface(result, case.grid)
-        zones = [zone_entry(z, False) for z in result.zones]
-        checks = diagnostics(result)
-    return CaseResult(case.index, case.label, entry, time.perf_counter() - t0,
-                      [f"{w.category.__name__}: {w.message}" for w in caught]
-                      + grid_warnings(result, case.x if X is not None else None), zones,
-                      stress_map, checks)
+    first = group[0]
+    material = build_once(first.material)
+    punch = build_once(first.punch)
+    by_speed, early = {}, {}
+    for case in group:
+        if case.speed not in by_speed:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                try:
+                    by_speed[case.speed] = _shared_constants(material, case.speed)
+                except (contact.ContactInputError, sie.SIEInputError) as exc:
+                    by_speed[case.speed] = exc
+            if caught:               # computed here first (near the Rayleigh speed)
+                early[case.index] = [f"{w.category.__name__}: {w.message}" for w in caught]
+    consts = [by_speed[case.speed] for case in group]
+    ready = [i for i, k in enumerate(consts) if not isinstance(k, Exception)]
+    results = [k if isinstance(k, Exception) else None for k in consts]
+    if len(ready) > 1:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            solved = _solve_batch([group[i] for i in ready], material, punch,
+                                  [consts[i] for i in ready])
+        if not caught:               # else each is solved alone below, warnings attributed
+            for i, r in zip(ready, solved):
+                results[i] = r
+    share = (time.perf_counter() - t0) / len(group)
+    out = []
+    for i, case in enumerate(group):
+        t1 = time.perf_counter()
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                res = results[i]
+                if res is None:
+                    (res,) = _solve_batch([case], material, punch, [consts[i]])
+                if not isinstance(res, Exception):
+                    res = _case_result(case, res)
+            except (contact.ContactInputError, sie.SIEInputError) as exc:
+                res = exc
+        if not isinstance(res, Exception):
+            res.time_s = share + (time.perf_counter() - t1)
+            res.warnings = early.get(case.index, []) + \
+                [f"{w.category.__name__}: {w.message}" for w in caught] + res.warnings
+        out.append(res)
+    return out
+
+
+def _solve_batch(cases, material, punch, consts) -> list:
+    """contact.solve_batch of the cases (one batch key), errors in place."""
+    numerics = cases[0].numerics
+    return contact.solve_batch(
+        material, punch, load=[c.inputs["load"] for c in cases],
+        speed=[c.speed for c in cases], friction=[c.inputs["friction"] for c in cases],
+        direction=[c.inputs["direction"] for c in cases], method=numerics.method,
+        n=numerics.n, tol=numerics.tol, constants=consts, residual=True, errors="return")
+
+
+def _case_result(case: Case, result) -> CaseResult:
+    """The case's entry from its solved contact: the requested fields in the scene's order."""
+    entry = {"inputs": dict(case.inputs)}
+    several = len(result.zones) > 1
+    with_sif = "sif" in case.fields
+    X = None
+    stress_map = None
+    for name in case.fields:
+        if name == "zones" or (several and name in ZONE_FIELDS):
+            if "zones" not in entry:
+                entry["zones"] = [zone_entry(z, with_sif) for z in result.zones]
+        elif name == "ends":
+            entry["ends"] = [result.ends[0], result.ends[1]]
+        elif name == "exponents":
+            entry["exponents"] = {"left": result.beta, "right": result.alpha}
+        elif name == "sif":
+            entry["sif"] = dict(result.sif)
+        elif name in CURVE_FIELDS:
+            if X is None:
+                X = case.x.points() if case.x is not None else _auto_x(result)
+            entry[name] = {"x": X, "values": _sample(result, name, X)}
+        elif name == "subsurface":
+            entry[name], stress_map = subsurface(result, case.grid)
+    zones = [zone_entry(z, False) for z in result.zones]
+    return CaseResult(case.index, case.label, entry, 0.0,
+                      grid_warnings(result, case.x if X is not None else None), zones,
+                      stress_map, diagnostics(result))
 
 
 def diagnostics(result) -> dict:
@@ -390,7 +475,7 @@ class SceneRun:
         bar = _progress_bar(self.count, self._progress)
         delivered = 0
         try:
-            for index, res in iter_chunked(run_case, self.scene, self._executor, bar.update):
+            for index, res in iter_chunked(run_cases, self.scene, self._executor, bar.update):
                 if isinstance(res, Exception):
                     with _naming(self.scene.case(index), self.scene):
                         raise res

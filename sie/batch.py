@@ -1,0 +1,570 @@
+"""Many one-interval dominant equations at once: the stages of :func:`sie.solve` with a
+batch axis.
+
+    a_i psi_i(s) + (b_i/pi) PV int_{c_i}^{d_i} psi_i(t)/(t - s) dt = f(s),   i < B,
+
+one interval each, no kernel, no breaks, the same end choices and the same n.  Each stage of
+:func:`sie.solve` (exponents, the projection rule of (1-u)^{-alpha}(1+u)^{-beta}, the
+projection of f, the diagonal solve lambda c_{m+kappa} = f_m) runs for all B equations in one
+compiled loop, with f called once on all B sets of nodes.  Per equation the arithmetic is
+that of :func:`sie.solve` (the same Gauss-Jacobi kernel, norms and recurrences; a sum may be
+taken in another order, so results agree to rounding), and each equation's result does not
+depend on the others in the batch.  For parameter sweeps, where the Python around a solve
+of a few coefficients costs more than its arithmetic.
+
+References: as for :func:`sie.solve` (Erdogan, Gupta & Cook 1973; Krenk 1975).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._jit import jit
+from .cauchy_kernels import series_forward_limit, series_kernel
+from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidIntervalError, SideConditionError,
+                     call_checked)
+from .exponents import check_coefficients, check_end, exponents_of
+from .gaussjacobi import N_BOUNDARY, _small_rule
+from .intervals import Interval
+from .jacobi import _jacobi_norms, _vandermonde
+from .quadrature import _NEAR_MINUS_ONE, WeightedRule
+from .solution import IntervalSolution, Solution
+from .special import jacobi_moment_shifted
+
+__all__ = ["DominantBatch", "solve_batch", "functionals_batch", "SolutionBatch",
+           "FunctionalsBatch"]
+
+_FORWARD_GROWTH = 30.0        # as sie.cauchy: the most the forward recurrence may amplify
+
+
+# --------------------------------------------------------------------------
+# compiled loops over the batch
+# --------------------------------------------------------------------------
+@jit()
+def _rules(q, A, Bv, X, W, ok):
+    """Gauss-Jacobi rules of (1-x)^A_i (1+x)^Bv_i with q nodes (the kernel of
+    :func:`sie.gauss_jacobi` for small q); ok[i] False where it declines."""
+    for i in range(A.shape[0]):
+        x, w, good = _small_rule(q, A[i], Bv[i])
+        ok[i] = good
+        if good:
+            X[i] = x
+            W[i] = w
+
+
+@jit()
+def _norms(count, A, Bv, H):
+    """h_m of P_m^{(A_i, Bv_i)}, m < count."""
+    for i in range(A.shape[0]):
+        H[i] = _jacobi_norms(count, A[i], Bv[i])
+
+
+@jit()
+def _project(count, A, Bv, X, OMEGA, F, out):
+    """out[i, m] = sum_j OMEGA[i, j] F[i, j] P_m^{(A_i, Bv_i)}(X[i, j])."""
+    q = X.shape[1]
+    for i in range(A.shape[0]):
+        V = _vandermonde(count, A[i], Bv[i], X[i])
+        for m in range(count):
+            s = 0.0
+            for j in range(q):
+                s += OMEGA[i, j] * F[i, j] * V[j, m]
+            out[i, m] = s
+
+
+@jit()
+def _series(C, Al, Be, u, out):
+    """out[i, j] = sum_k C[i, k] P_k^{(Al_i, Be_i)}(u_j)."""
+    n = C.shape[1]
+    for i in range(C.shape[0]):
+        V = _vandermonde(n, Al[i], Be[i], u)
+        for j in range(u.shape[0]):
+            s = 0.0
+            for k in range(n):
+                s += C[i, k] * V[j, k]
+            out[i, j] = s
+
+
+@jit()
+def _cauchy_limits(C, Al, Be, MU0, P, z, zm1, zp1, log_growth, cap, out):
+    """out[i] = sum_k C[i, k] F_k(z) (the kernel of :func:`sie.cauchy.cauchy_series`; real z
+    inside: H[psi] + i psi), each series cut after its last nonzero coefficient."""
+    for i in range(C.shape[0]):
+        last = 0
+        for k in range(C.shape[1]):
+            if C[i, k] != 0.0:
+                last = k
+        c = C[i, :last + 1].copy()
+        lr = series_forward_limit(c, log_growth, cap)
+        series_kernel(Al[i], Be[i], MU0[i], lr, z, zm1, zp1, P[i], c, out[i])
+
+
+# --------------------------------------------------------------------------
+# the stages
+# --------------------------------------------------------------------------
+def _coefficients(a, b):
+    """a and b as float arrays of one length (scalars broadcast), each pair checked."""
+    try:
+        a, b = np.broadcast_arrays(np.array(a, dtype=float).reshape(-1) if np.ndim(a) else
+                                   np.array([a], dtype=float),
+                                   np.array(b, dtype=float).reshape(-1) if np.ndim(b) else
+                                   np.array([b], dtype=float))
+    except (TypeError, ValueError):
+        raise InvalidCoefficientError(
+            f"a and b must be numbers or equal-length sequences of numbers, got shapes "
+            f"{np.shape(a)} and {np.shape(b)}") from None
+    if a.size == 0:
+        raise InvalidCoefficientError("a and b must give at least one equation, got none")
+    for ai, bi in zip(a.tolist(), b.tolist()):
+        check_coefficients(ai, bi)
+    return a.copy(), b.copy()
+
+
+def _check_batch_intervals(intervals, count):
+    try:
+        iv = np.array(intervals, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidIntervalError("intervals must be (c, d) pairs of numbers") from None
+    if iv.shape != (count, 2):
+        raise InvalidIntervalError(f"intervals must be one (c, d) pair per equation, shape "
+                                   f"({count}, 2); got shape {iv.shape}")
+    good = np.isfinite(iv).all(axis=1) & (iv[:, 0] < iv[:, 1])
+    if not good.all():
+        k = int(np.flatnonzero(~good)[0])
+        raise InvalidIntervalError(f"interval {k} must be finite with c < d, got "
+                                   f"{tuple(iv[k].tolist())}")
+    return iv
+
+
+class DominantBatch:
+    """B dominant equations a_i psi + (b_i/pi) PV int_{c_i}^{d_i} psi/(t - s) dt = f(s),
+    prepared once: the exponents, the projection rules and their norms (stage 1 of
+    :func:`sie.solve`, which does not depend on the interval).  :meth:`functionals` and
+    :meth:`solve` then take B intervals and f, as often as a search over the intervals needs.
+
+    Parameters
+    ----------
+    a, b : float or array_like, shape (B,)
+        Coefficients per equation (a scalar is shared); every b != 0.
+    n : int
+        Jacobi coefficients of each phi_i (>= 2 for index 1), at most ``sie.N_MAX``.
+    left, right : {"bounded", "singular"}
+        Behaviour of every psi_i at its left and right end.
+
+    Attributes
+    ----------
+    a, b : ndarray, shape (B,)
+    alpha, beta : ndarray, shape (B,)
+        Exponents of each psi_i at its right and left end.
+    kappa : int
+        The index, shared (the end choices are).
+    n : int
+    exponents : tuple of Exponents
+        Per equation (:func:`sie.sie_exponents`).
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError
+        As for :func:`sie.solve`.
+
+    References
+    ----------
+    As for :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> eqs = sie.DominantBatch(a=[0.0, -1.0], b=1.0, n=4, left="bounded", right="bounded")
+    >>> len(eqs), eqs.kappa, [round(float(v), 12) for v in eqs.alpha]
+    (2, -1, [0.5, 0.25])
+    >>> fb = eqs.functionals(lambda s: -s, [(-1.0, 1.0), (-1.0, 1.0)])
+    >>> round(float(fb.integral[0] / (np.pi / 2)), 12)            # psi = sqrt(1 - s^2)
+    1.0
+    """
+
+    def __init__(self, *, a, b, n, left, right):
+        from .solver import _check_n
+        a, b = _coefficients(a, b)
+        left, right = check_end("left", left), check_end("right", right)
+        exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(a.tolist(), b.tolist()))
+        self._set(a, b, _check_n(n, exps[0], ""), left, right, exps)
+
+    def _set(self, a, b, n, left, right, exps, rule=None):
+        B = a.size
+        self.a, self.b, self.n, self.left, self.right, self.exponents = a, b, n, left, right, exps
+        self.kappa = k = exps[0].kappa
+        self.alpha = np.array([e.alpha for e in exps])
+        self.beta = np.array([e.beta for e in exps])
+        self.lam = -(2.0 ** (-k)) * b / np.array([e.sin for e in exps])   # dominant_lambda
+        self.mu0 = np.array([jacobi_moment_shifted(e.alpha_p1, e.beta_p1) for e in exps])
+        if rule is not None:
+            self._x, self._omega, self._end, self._corr, self._norms = rule
+            return
+        q = n - k
+        X, W = np.empty((B, q)), np.empty((B, q))
+        end, corr = np.zeros(B, dtype=np.int64), np.zeros(B)
+        ok = np.zeros(B, dtype=bool)
+        plain = np.array([min(e.alpha_m1, e.beta_m1) >= _NEAR_MINUS_ONE for e in exps])
+        A, Bv = np.ascontiguousarray(-self.alpha), np.ascontiguousarray(-self.beta)
+        if 2 <= q <= 2 * N_BOUNDARY:
+            _rules(q, A, Bv, X, W, ok)
+            ok &= plain
+        for i in np.flatnonzero(~ok).tolist():
+            # a split-off end (an exponent within 0.01 of 1), or a size the kernel leaves
+            # to the general rule
+            e = exps[i]
+            rule = WeightedRule.build(q, -e.alpha, -e.beta, e.alpha_m1, e.beta_m1)
+            X[i], W[i], end[i], corr[i] = rule.x, rule.omega, rule.end, rule.corr
+        H = np.empty((B, q))
+        _norms(q, A, Bv, H)
+        H[:, 0] = [jacobi_moment_shifted(e.alpha_m1, e.beta_m1) for e in exps]   # exact h_0
+        self._x, self._omega, self._end, self._corr, self._norms = X, W, end, corr, H
+
+    def __len__(self):
+        return self.a.size
+
+    def take(self, indices) -> "DominantBatch":
+        """The equations at ``indices`` (in that order), their rules kept."""
+        idx = np.asarray(indices, dtype=int).reshape(-1)
+        out = DominantBatch.__new__(DominantBatch)
+        out._set(self.a[idx], self.b[idx], self.n, self.left, self.right,
+                 tuple(self.exponents[i] for i in idx.tolist()),
+                 (self._x[idx], self._omega[idx], self._end[idx], self._corr[idx],
+                  self._norms[idx]))
+        return out
+
+    # -- stage 2: the right-hand side ------------------------------------------------------
+    def _sample(self, f, iv):
+        """f at the real nodes of every equation (B, q), and at each split-off end."""
+        c, d = iv[:, 0:1], iv[:, 1:2]
+        X = 0.5 * (c + d) + 0.5 * (d - c) * self._x
+        split = np.flatnonzero(self._end)
+        pts = X.ravel()
+        if split.size:
+            pts = np.concatenate([pts, np.where(self._end[split] > 0, iv[split, 1],
+                                                iv[split, 0])])
+        v = call_checked(f, "f", (pts,), pts.shape)
+        return v[:X.size].reshape(X.shape), v[X.size:]
+
+    def _projections(self, f, iv, count):
+        """<f, P_m^{(-alpha,-beta)}> / h_m, m < count, per equation, shape (B, count)."""
+        F, f_end = self._sample(f, iv)
+        out = np.empty((len(self), count))
+        _project(count, np.ascontiguousarray(-self.alpha), np.ascontiguousarray(-self.beta),
+                 self._x, self._omega, F, out)
+        for k, i in enumerate(np.flatnonzero(self._end).tolist()):
+            e = self.exponents[i]
+            rule = WeightedRule(self._x[i], self._omega[i], int(self._end[i]),
+                                float(self._corr[i]), -e.alpha, -e.beta, e.alpha_m1, e.beta_m1)
+            out[i] += (f_end[k] * self._corr[i]) * rule.end_values(count)
+        return out / self._norms[:, :count]
+
+    # -- the functionals and the solution ----------------------------------------------------
+    def functionals(self, f, intervals) -> "FunctionalsBatch":
+        """int psi_i and the solvability residual of each equation on its interval, from
+        one Gauss sum each (:func:`functionals_batch`)."""
+        iv = _check_batch_intervals(intervals, len(self))
+        k = self.kappa
+        if k == 1:
+            return FunctionalsBatch(None, None, self.alpha, self.beta, 1)
+        fhat = self._projections(f, iv, 1 if k == 0 else 2)
+        scale = 0.5 * (iv[:, 1] - iv[:, 0]) * self.mu0 / self.lam
+        if k == 0:
+            return FunctionalsBatch(scale * fhat[:, 0], None, self.alpha, self.beta, 0)
+        return FunctionalsBatch(scale * fhat[:, 1], fhat[:, 0].copy(), self.alpha, self.beta,
+                                -1)
+
+    def solve(self, f, intervals, total=None) -> "SolutionBatch":
+        """The solution of each equation on its interval (:func:`solve_batch`)."""
+        iv = _check_batch_intervals(intervals, len(self))
+        B, k, n = len(self), self.kappa, self.n
+        if k == 1:
+            if total is None:
+                raise SideConditionError("total (= int psi) is required when both ends are "
+                                         "singular (index 1)")
+            t = np.broadcast_to(np.asarray(total, dtype=float), (B,)) if np.ndim(total) == 0 \
+                else np.asarray(total, dtype=float).reshape(-1)
+            if t.size != B or not np.all(np.isfinite(t)):
+                raise SideConditionError(f"total must be one finite number per equation "
+                                         f"({B}), got {total!r}")
+        elif total is not None:
+            raise SideConditionError(f"total must not be given: the index is {k} (a total is "
+                                     "only for both ends singular, index 1)")
+        fhat = self._projections(f, iv, n - k)
+        C = np.empty((B, n))
+        cons = None
+        if k == 1:
+            C[:, 0] = t / (0.5 * (iv[:, 1] - iv[:, 0]) * self.mu0)
+            C[:, 1:] = fhat / self.lam[:, None]
+        elif k == 0:
+            C[:] = fhat / self.lam[:, None]
+        else:
+            C[:] = fhat[:, 1:] / self.lam[:, None]
+            cons = fhat[:, 0].copy()
+        if n > 8:
+            from .solver import _chop_noise
+            for i, e in enumerate(self.exponents):
+                C[i] = _chop_noise(C[i], e)
+        C.setflags(write=False)
+        return SolutionBatch(iv, self.a, self.b, self.alpha, self.beta, k, n, C, cons,
+                             self.exponents, self.mu0)
+
+
+# --------------------------------------------------------------------------
+# functionals
+# --------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class FunctionalsBatch:
+    """int psi and the solvability residual of each equation of a batch, without its
+    solution (:func:`functionals_batch`).
+
+    Attributes
+    ----------
+    integral : ndarray, shape (B,)
+        int_{c_i}^{d_i} psi_i for kappa <= 0; None for kappa = 1 (the side condition).
+    consistency : ndarray, shape (B,) or None
+        kappa = -1: the solvability residual of each (as ``Solution.consistency``).
+    alpha, beta : ndarray, shape (B,)
+        Exponents at the right and the left end.
+    kappa : int
+        The index (the same for all: the end choices are shared).
+
+    References
+    ----------
+    As for :func:`sie.dominant_functionals`.
+
+    Examples
+    --------
+    >>> import sie
+    >>> fb = sie.functionals_batch(lambda s: 1.0 + 0.0 * s, a=0.0, b=1.0, n=4,
+    ...                            left="bounded", right="bounded", intervals=[(-1.0, 1.0)])
+    >>> fb.kappa, round(float(fb.consistency[0]), 12)     # f = 1 is not solvable: residual 1
+    (-1, 1.0)
+    """
+    integral: np.ndarray | None
+    consistency: np.ndarray | None
+    alpha: np.ndarray
+    beta: np.ndarray
+    kappa: int
+
+
+def functionals_batch(f, *, a, b, n, left, right, intervals) -> FunctionalsBatch:
+    """:func:`sie.dominant_functionals` of B equations on their own intervals, at once.
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised right-hand side f(s) in real coordinates, called once with the nodes of
+        all B equations (a 1-d array).
+    a, b : float or array_like, shape (B,)
+        Coefficients per equation (a scalar is shared); every b != 0.
+    n : int
+        Jacobi coefficients (as for :func:`sie.solve`).
+    left, right : {"bounded", "singular"}
+        Behaviour of every psi_i at its left and right end.
+    intervals : array_like, shape (B, 2)
+        [c_i, d_i] of each equation.
+
+    Returns
+    -------
+    FunctionalsBatch
+        ``integral`` in real coordinates: int psi_i ds = h_i mu_0 c_0.
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError, CallableOutputError
+        As for :func:`sie.solve`; InvalidIntervalError for an interval not finite with c < d.
+
+    References
+    ----------
+    As for :func:`sie.dominant_functionals`.
+
+    Examples
+    --------
+    psi = sqrt(1 - s^2) solves (1/pi) PV int psi/(t - s) dt = -s on [-1, 1], with
+    int psi = pi/2; on [-2, 2] the same f gives psi = sqrt(4 - s^2), with int psi = 2 pi:
+
+    >>> import numpy as np, sie
+    >>> fb = sie.functionals_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
+    ...                            right="bounded", intervals=[(-1.0, 1.0), (-2.0, 2.0)])
+    >>> np.round(fb.integral / np.pi, 12).tolist(), bool(np.all(abs(fb.consistency) < 1e-14))
+    ([0.5, 2.0], True)
+    """
+    a, b = _per_interval(a, b, intervals)
+    return DominantBatch(a=a, b=b, n=n, left=left, right=right).functionals(f, intervals)
+
+
+# --------------------------------------------------------------------------
+# solutions
+# --------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class SolutionBatch:
+    """The solutions of B one-interval equations (:func:`solve_batch`); immutable.
+
+    ``len(batch)`` is B; ``batch[i]`` is equation i's :class:`sie.Solution` (built on
+    access, the same as :func:`sie.solve` with ``intervals=[(c_i, d_i)]`` returns, to
+    rounding).  The array methods evaluate all B at once at the same local points.
+
+    Attributes
+    ----------
+    intervals : ndarray, shape (B, 2)
+    a, b : ndarray, shape (B,)
+    alpha, beta : ndarray, shape (B,)
+        Exponents at the right and the left end of each.
+    kappa : int
+        The shared index.
+    n : int
+        Jacobi coefficients per equation.
+    coefficients : ndarray, shape (B, n)
+        c_k of each phi_i = sum_k c_k P_k^{(alpha_i,beta_i)} (read-only).
+    consistency : ndarray, shape (B,) or None
+        kappa = -1: the solvability residual of each.
+    exponents : tuple of Exponents
+    mu0 : ndarray, shape (B,)
+        int (1-u)^alpha_i (1+u)^beta_i du over [-1, 1] (exact).
+
+    References
+    ----------
+    As for :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sb = sie.solve_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
+    ...                      right="bounded", intervals=[(-1.0, 1.0), (-2.0, 2.0)])
+    >>> np.round(sb.integral() / np.pi, 12).tolist()           # pi R^2 / 2
+    [0.5, 2.0]
+    >>> np.round(sb.phi_local(np.array([0.0])), 12).tolist()   # psi = sqrt(R^2 - s^2)
+    [[1.0], [2.0]]
+    """
+    intervals: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    alpha: np.ndarray
+    beta: np.ndarray
+    kappa: int
+    n: int
+    coefficients: np.ndarray
+    consistency: np.ndarray | None
+    exponents: tuple
+    mu0: np.ndarray
+
+    def __len__(self):
+        return self.a.size
+
+    def __getitem__(self, i) -> Solution:
+        i = range(len(self))[i]
+        c = self.coefficients[i]                    # a read-only view of the batch's array
+        cons = None if self.consistency is None else float(self.consistency[i])
+        c0, d0 = self.intervals[i].tolist()
+        piece = IntervalSolution(Interval(c0, d0), self.exponents[i], self.n, c, cons)
+        return Solution((piece,), float(self.a[i]), float(self.b[i]), True, None)
+
+    def take(self, indices) -> "SolutionBatch":
+        """The batch of the equations at ``indices`` (in that order)."""
+        idx = np.asarray(indices, dtype=int).reshape(-1)
+        C = self.coefficients[idx]
+        C.setflags(write=False)
+        return SolutionBatch(self.intervals[idx], self.a[idx], self.b[idx], self.alpha[idx],
+                             self.beta[idx], self.kappa, self.n, C,
+                             None if self.consistency is None else self.consistency[idx],
+                             tuple(self.exponents[i] for i in idx.tolist()), self.mu0[idx])
+
+    def integral(self) -> np.ndarray:
+        """int psi_i over its interval, shape (B,): h_i mu_0 c_0."""
+        h = 0.5 * (self.intervals[:, 1] - self.intervals[:, 0])
+        return h * self.mu0 * self.coefficients[:, 0]
+
+    def phi_local(self, u) -> np.ndarray:
+        """phi_i at local points u of [-1, 1] (the same for all), shape (B, len(u))."""
+        u = np.ascontiguousarray(u, dtype=float).ravel()
+        out = np.empty((len(self), u.size))
+        _series(self.coefficients, self.alpha, self.beta, u, out)
+        return out
+
+    def weight_local(self, u) -> np.ndarray:
+        """(1 - u)^alpha_i (1 + u)^beta_i at local points u, shape (B, len(u))."""
+        u = np.asarray(u, dtype=float).ravel()
+        return (1.0 - u) ** self.alpha[:, None] * (1.0 + u) ** self.beta[:, None]
+
+    def cauchy_limit_local(self, u) -> np.ndarray:
+        """(1/pi) int_{-1}^{1} psi_i / (t - u - i0) dt at local points u strictly inside
+        (-1, 1), shape (B, len(u)) complex: H[psi_i](u) + i psi_i(u) (Plemelj), each from
+        its series' Cauchy transform (:func:`sie.jacobi_cauchy`), independent of the
+        equation it solves."""
+        u = np.ascontiguousarray(u, dtype=float).ravel()
+        if not np.all(np.abs(u) < 1.0):
+            raise EvaluationPointError("cauchy_limit_local needs points strictly inside (-1, 1)")
+        z = u.astype(complex)
+        P = np.array([[float(-self.kappa), e.alpha, e.alpha_m1, e.sin, 0.0,
+                       m0 * (e.beta_p1 - e.alpha_p1) / (e.alpha_p1 + e.beta_p1), m0]
+                      for e, m0 in zip(self.exponents, self.mu0.tolist())])
+        out = np.empty((len(self), u.size), dtype=complex)
+        _cauchy_limits(np.ascontiguousarray(self.coefficients), self.alpha, self.beta,
+                       self.mu0, P, z, z - 1.0, z + 1.0, math.log(_FORWARD_GROWTH),
+                       math.log(2.0), out)
+        return out
+
+
+def solve_batch(f, *, a, b, n, left, right, intervals, total=None) -> SolutionBatch:
+    """:func:`sie.solve` of B one-interval equations without kernel or breaks, at once.
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised right-hand side f(s) in real coordinates, called once with the nodes of
+        all B equations (a 1-d array).
+    a, b : float or array_like, shape (B,)
+        Coefficients per equation (a scalar is shared); every b != 0.
+    n : int
+        Jacobi coefficients of each phi_i (>= 2 for index 1).
+    left, right : {"bounded", "singular"}
+        Behaviour of every psi_i at its left and right end.
+    intervals : array_like, shape (B, 2)
+        [c_i, d_i] of each equation.
+    total : float or array_like, shape (B,), optional
+        int psi_i for index 1 (both ends singular); must be absent otherwise.
+
+    Returns
+    -------
+    SolutionBatch
+
+    Raises
+    ------
+    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError, CallableOutputError
+        As for :func:`sie.solve`; InvalidIntervalError for an interval not finite with c < d;
+        SideConditionError for ``total`` missing for index 1, given otherwise, or not finite.
+
+    Notes
+    -----
+    No residual check and no solvability warning: the collocation of the dominant equation
+    on one interval is exact by construction, and ``consistency`` holds each equation's
+    solvability residual for the caller to judge (a search over the ends drives it to zero).
+
+    References
+    ----------
+    As for :func:`sie.solve`.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> sb = sie.solve_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
+    ...                      right="bounded", intervals=[(-1.0, 1.0), (-0.5, 0.5)])
+    >>> len(sb), sb.kappa
+    (2, -1)
+    >>> [round(float(v), 12) for v in sb[0](np.array([0.0, 0.6]))]    # sqrt(1 - s^2)
+    [1.0, 0.8]
+    """
+    a, b = _per_interval(a, b, intervals)
+    return DominantBatch(a=a, b=b, n=n, left=left, right=right).solve(f, intervals, total)
+
+
+def _per_interval(a, b, intervals):
+    """a and b, where given once for all, repeated for each interval."""
+    try:
+        count = len(intervals)
+    except TypeError:
+        return a, b                 # the intervals check says what is wrong
+    return (a if np.ndim(a) else [a] * count), (b if np.ndim(b) else [b] * count)
