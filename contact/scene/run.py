@@ -417,8 +417,8 @@ def speed_entry(material: contact.Orthotropic, speed: float, fields) -> dict:
 
 def iter_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
                ) -> SceneRun:
-    """The cases of a scene solved one after the other, or through ``executor``, delivered in
-    scene order as they complete (:class:`SceneRun`); nothing is solved until it is iterated.
+    """The cases of a scene solved in chunks (:func:`run_cases`) in this process or through
+    ``executor``, delivered in scene order as they complete (:class:`SceneRun`); nothing is solved until it is iterated.
 
     Parameters are those of :func:`run_scene`.  The cases are built as they are needed and a
     bounded number of them is solved ahead of the consumer
@@ -521,7 +521,7 @@ def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = F
     scene : Scene
     executor : concurrent.futures.Executor, optional
         Where cases are solved (a ProcessPoolExecutor, or a Dask ``Client.get_executor()``);
-        None: in this process, one after the other.  Results are the same either way.  Cases
+        None: in this process, a chunk at a time.  Results are the same either way.  Cases
         are plain data rebuilt where they run: the workers must be able to import ``contact``
         (and a profile's "module:function", looked up in the scene's directory first).
     progress : bool
