@@ -487,3 +487,28 @@ def test_closed_form_through_batch(name):
         assert r.sif == c.sif
         X = interior_points(c.zones[0], 7)
         assert np.array_equal(r.pressure(X), c.pressure(X))
+
+
+def test_the_garbage_collector_is_left_as_it_was():
+    """solve_batch (and the scene's chunks) pause Python's cyclic collector while they run
+    (contact.solver.cyclic_gc_paused): afterwards it is on again if it was on, off if it was
+    off, also when a case raises."""
+    import gc
+    punch, load = PUNCHES["cylinder"]
+    assert gc.isenabled()
+    contact.solve_batch(ZHOU, punch, load=load, speed=[0.1, 0.2], friction=0.1)
+    assert gc.isenabled()
+    with pytest.raises(contact.LoadError):
+        contact.solve_batch(ZHOU, punch, load=[load, -1.0], speed=0.1)
+    assert gc.isenabled()
+    with pytest.raises(contact.ContactLossError):
+        with contact.solver.cyclic_gc_paused():
+            assert not gc.isenabled()
+            raise contact.ContactLossError("inside")
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        contact.solve_batch(ZHOU, punch, load=load, speed=[0.1, 0.2], friction=0.1)
+        assert not gc.isenabled()
+    finally:
+        gc.enable()

@@ -17,6 +17,8 @@ import numpy as np
 import contact
 import sie
 
+from contact.solver import cyclic_gc_paused
+
 from .batch import build_once, iter_chunked
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
                    SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
@@ -190,8 +192,9 @@ def run_cases(cases) -> list:
         plus its own fields.
     """
     out = []
-    for _, group in itertools.groupby(cases, key=_batch_key):
-        out += _run_group(list(group))
+    with cyclic_gc_paused():
+        for _, group in itertools.groupby(cases, key=_batch_key):
+            out += _run_group(list(group))
     return out
 
 
@@ -534,7 +537,8 @@ def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = F
         names the case.
     """
     run = iter_scene(scene, executor, progress)
-    cases = list(run)
+    with cyclic_gc_paused():           # the results kept here are what the collector walks
+        cases = list(run)
     return SceneResult(scene, cases, run.timing_s, run.warnings)
 
 
