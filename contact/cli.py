@@ -150,7 +150,8 @@ def cmd_run(args) -> int:
                                     figures=None if args.figures else False, table=progress)
     with writer:
         with _executor(args.jobs, args.scheduler) as executor:
-            run = scenes.iter_scene(scene, executor=executor, progress=progress)
+            run = scenes.iter_scene(scene, executor=executor, progress=progress,
+                                    encode=writer.encoder())
             for res in run:
                 with _writing_into(args.out):
                     writer.add(res)

@@ -382,3 +382,66 @@ def test_memory_does_not_grow_with_the_sweep(tmp_path, monkeypatch):
     assert kept_large - kept_small > 300 * n                # the measure sees growth
     assert large - small < 0.1 * (kept_large - kept_small), (small, large, kept_small,
                                                              kept_large)
+
+
+# --------------------------------------------------------------------------
+# outputs encoded where the cases are solved
+# --------------------------------------------------------------------------
+@pytest.mark.parametrize("fields", [["ends", "exponents", "sif", "pressure"],
+                                    ["zones", "sif"], ["ends", "constants"]])
+def test_cases_encoded_by_the_workers_write_the_same_files(tmp_path, fields):
+    """A writer's text of each case made where the case is solved (iter_scene's encode=,
+    here by the workers of a pool) gives result.json and sweep.csv byte for byte as the
+    writer's own formatting does (per-speed fields, "constants", join the entries in the
+    parent: those cases are formatted there)."""
+    s = parse_scene_text(SHARED_X.replace('["ends", "exponents", "pressure"]',
+                                          json.dumps(fields)))
+
+    def write(out, encode, executor=None):
+        with SceneWriter(s, out, s.case_count, figures=False) as writer:
+            run = iter_scene(s, executor=executor,
+                             encode=writer.encoder() if encode else None)
+            for res in run:
+                assert (res.encoded is not None) == (encode and "constants" not in fields)
+                writer.add(res)
+            writer.finish(1.0, run.warnings)
+        return {name: (out / name).read_bytes() for name in ("result.json", "sweep.csv")}
+    plain = write(tmp_path / "plain", False)
+    with ProcessPoolExecutor(2) as ex:
+        assert write(tmp_path / "pool", True, ex) == plain
+    assert write(tmp_path / "here", True) == plain
+
+
+def test_chunks_are_sized_again_from_what_the_workers_took(monkeypatch):
+    """The first cases, solved here while the process warms up, can take far longer than
+    the rest: each finished chunk's time in its worker lowers the estimate, and the chunks
+    after it grow (here: the probe takes 50 ms a case, the workers 1 ms)."""
+    monkeypatch.setattr(batch, "_PROBE", 2)
+    monkeypatch.setattr(batch, "CHUNKS_PER_WORKER", 1)
+    slow_first = {"left": 2}
+
+    def solve(cases):
+        if slow_first["left"] > 0:
+            slow_first["left"] -= len(cases)
+            time.sleep(0.05 * len(cases))
+        else:
+            time.sleep(0.001 * len(cases))
+        return [c.index for c in cases]
+
+    class Source:
+        case_count = 2000
+
+        def iter_cases(self, start=0, stop=None):
+            return (FakeCase(i, "m", 0.0, {}) for i in range(start, stop or self.case_count))
+
+    sizes = []
+
+    class Recording(ThreadPoolExecutor):
+        def submit(self, fn, *args):
+            sizes.append(args[3] - args[2])
+            return super().submit(fn, *args)
+    with Recording(1) as ex:
+        got = [i for i, _ in batch.iter_chunked(solve, Source(), ex, lambda k: None)]
+    assert got == list(range(2000))
+    # TARGET_CHUNK_S / 50 ms = 4 cases a chunk at first; ~200 once a worker took 1 ms a case
+    assert sizes[0] <= 4 and max(sizes) >= 100

@@ -97,17 +97,21 @@ class ChunkResults:
     """The [(index, result)] of one chunk as a single object on its way back: Dask serializes
     a plain list (or tuple) element by element (measured on the 1e4 results of a cylinder
     sweep: the client's IO loop spent 0.6 s of CPU on them, 0.5 s with this one piece; a
-    process pool pickles either in one piece)."""
-    __slots__ = ("items",)
+    process pool pickles either in one piece), with the seconds the worker spent on it (what
+    sizes the next chunks)."""
+    __slots__ = ("items", "seconds")
 
-    def __init__(self, items):
+    def __init__(self, items, seconds=math.nan):
         self.items = items
+        self.seconds = seconds
 
 
 def run_range(fn, source, start: int, stop: int) -> ChunkResults:
     """:func:`run_chunk` on the cases ``start`` <= index < ``stop`` of ``source`` (a
     :class:`~contact.scene.spec.Scene`), built here: what a worker runs."""
-    return ChunkResults(run_chunk(fn, source.iter_cases(start, stop)))
+    t0 = time.perf_counter()
+    items = run_chunk(fn, source.iter_cases(start, stop))
+    return ChunkResults(items, time.perf_counter() - t0)
 
 
 def iter_chunked(fn, source, executor, on_done):
@@ -145,10 +149,8 @@ def iter_chunked(fn, source, executor, on_done):
     if (yield from _deliver(_run_here(fn, source, 0, probe, on_done))):
         return
     per_case = (time.perf_counter() - t0) / probe
-    workers = worker_count(executor)
-    size = chunk_size(max(total - probe, 1), workers, per_case)
-    yield from _windowed(fn, source, executor, probe, total, size, workers,
-                         CHUNKS_AHEAD * workers * size, on_done)
+    yield from _windowed(fn, source, executor, probe, total, per_case,
+                         worker_count(executor), on_done)
 
 
 def _run_here(fn, source, start, stop, on_done):
@@ -176,10 +178,15 @@ def tail_size(size: int, left: int, workers: int) -> int:
     return max(1, min(size, left, max(share, size // TAIL_SPLIT ** 3)))
 
 
-def _windowed(fn, source, executor, start, total, size, workers, ahead, on_done):
+def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
     """The cases ``start`` <= index < ``total`` (:func:`iter_chunked`): ranges of about
-    ``size`` (:func:`tail_size`) submitted to ``executor`` while fewer than ``ahead`` cases
-    handed out wait for delivery, delivered in order."""
+    :func:`chunk_size` cases (:func:`tail_size` toward the end) submitted to ``executor``
+    while fewer than ``CHUNKS_AHEAD`` chunks per worker handed out wait for delivery,
+    delivered in order.  ``per_case``: the seconds a case takes, from the first cases
+    (solved here, in a process that may still be warming up: an upper bound), lowered to
+    what each finished chunk took in its worker, and the chunks sized again."""
+    left = max(total - start, 1)
+    size = chunk_size(left, workers, per_case)
     done = {}                           # first index of a finished chunk -> its results
     running = {}                        # future -> first index of its chunk
     next_start = start                  # first index not yet handed out
@@ -187,7 +194,8 @@ def _windowed(fn, source, executor, start, total, size, workers, ahead, on_done)
     failed = math.inf                   # index of the first failing case known
     try:
         while delivered < total:
-            while next_start < min(total, failed) and next_start - delivered < ahead:
+            while next_start < min(total, failed) and \
+                    next_start - delivered < CHUNKS_AHEAD * workers * size:
                 stop = next_start + tail_size(size, total - next_start, workers)
                 running[executor.submit(run_range, fn, source, next_start, stop)] = next_start
                 next_start = stop
@@ -204,9 +212,13 @@ def _windowed(fn, source, executor, start, total, size, workers, ahead, on_done)
                 first = running.pop(fut)
                 if fut.cancelled():
                     continue
-                items = fut.result().items
+                chunk = fut.result()
+                items = chunk.items
                 on_done(len(items))
                 done[first] = items
+                if items and chunk.seconds < per_case * len(items):
+                    per_case = chunk.seconds / len(items)
+                    size = chunk_size(left, workers, per_case)
                 failed = min([failed] + [i for i, r in items if isinstance(r, Exception)])
             for fut, first in list(running.items()):
                 if first > failed and fut.cancel():

@@ -32,7 +32,7 @@ from .run import (SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _json_case, _j
                   _json_tail, progress_bar)
 from .spec import CURVE_FIELDS, Scene
 from .summary import TableSummary
-from .table import SweepCsv
+from .table import SweepCsv, SweepTable, raw_cells
 
 # --------------------------------------------------------------------------
 # writing: result.json, CSV, PNG, the printed table
@@ -123,6 +123,11 @@ class SceneWriter:
         self._drawn_cases, self._mapped_cases = [], []
         self._added = 0
         self._done = False
+
+    def encoder(self) -> "CaseEncoder":
+        """What makes this writer's text of a case where the case is solved (pass it to
+        :func:`contact.scene.iter_scene` as ``encode``)."""
+        return CaseEncoder(self.scene)
 
     def _open(self, part):
         self._files.append(part)
@@ -257,8 +262,8 @@ class ResultJson:
         self._count = 0
 
     def add(self, res: CaseResult) -> None:
-        self._fh.write(("\n" if self._count == 0 else ",\n") + 2 * _INDENT
-                       + dumps_json(_json_case(res), _INDENT, 2))
+        text = res.encoded[0] if res.encoded is not None else case_json(res)
+        self._fh.write(("\n" if self._count == 0 else ",\n") + 2 * _INDENT + text)
         self._count += 1
 
     def finish(self, timing_s: float, messages) -> Path:
@@ -271,6 +276,30 @@ class ResultJson:
 
     def close(self) -> None:
         self._fh.close()
+
+
+def case_json(res: CaseResult) -> str:
+    """A case's entry in result.json, as text at its indentation there."""
+    return dumps_json(_json_case(res), _INDENT, 2)
+
+
+class CaseEncoder:
+    """What the writers make of a case on its own -- its entry of result.json and its raw
+    row of sweep.csv, as text -- made where the case is solved (a worker of an executor:
+    :func:`contact.scene.iter_scene`'s ``encode``), so that the process that writes the
+    files copies them instead of formatting them (~30 us a case, which bounded how many
+    workers it could keep busy).  A picklable callable: ``encoder(res)`` sets
+    ``res.encoded`` and returns ``res``."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self._table = SweepTable(scene, scene.case_count)
+
+    def __call__(self, res: CaseResult) -> CaseResult:
+        buf = io.StringIO()
+        csv.writer(buf).writerow(raw_cells(self._table, res))
+        res.encoded = (case_json(res), buf.getvalue())
+        return res
 
 
 def _json_item(key: str, value) -> str:

@@ -53,6 +53,9 @@ class CaseResult:
     diagnostics : dict
         The solver's diagnostics (:func:`diagnostics`): ``n``, ``residual``, ``load_check``;
         written to result.json after the fields, and to sweep.csv.
+    encoded : (str, str) or None
+        Its entry of result.json and its raw row of sweep.csv as text, made where it was
+        solved (:class:`contact.scene.output.CaseEncoder`); None: the writers make them.
     """
     index: int
     label: str
@@ -62,6 +65,7 @@ class CaseResult:
     zones: list = field(default_factory=list)
     subsurface: "SubsurfaceMap | None" = None
     diagnostics: dict = field(default_factory=dict)
+    encoded: tuple | None = field(default=None, repr=False)
 
     def curve(self, name):
         """(x, values) of a sampled curve field."""
@@ -418,18 +422,27 @@ def speed_entry(material: contact.Orthotropic, speed: float, fields) -> dict:
     return out
 
 
+def _solved_and_encoded(encode, cases) -> list:
+    """:func:`run_cases`, each result passed through ``encode`` (what a worker runs for a
+    writer that wants its cases encoded where they are solved)."""
+    return [r if isinstance(r, Exception) else encode(r) for r in run_cases(cases)]
+
+
 def iter_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
-               ) -> SceneRun:
+               encode=None) -> SceneRun:
     """The cases of a scene solved in chunks (:func:`run_cases`) in this process or through
     ``executor``, delivered in scene order as they complete (:class:`SceneRun`); nothing is solved until it is iterated.
 
-    Parameters are those of :func:`run_scene`.  The cases are built as they are needed and a
-    bounded number of them is solved ahead of the consumer
+    Parameters are those of :func:`run_scene`, and ``encode``: a picklable callable applied
+    to each result where it is solved (:class:`contact.scene.output.CaseEncoder`, from
+    :meth:`contact.scene.SceneWriter.encoder`: a writer's formatting done by the workers),
+    unless the scene asks for per-speed fields (added here).  The cases are built as they
+    are needed and a bounded number of them is solved ahead of the consumer
     (:func:`contact.scene.batch.iter_chunked`): a consumer that keeps nothing per case (the
     writers of ``contact run``, :class:`contact.scene.output.SceneWriter`) runs a sweep of any
     length in bounded memory.
     """
-    return SceneRun(scene, executor, progress)
+    return SceneRun(scene, executor, progress, encode)
 
 
 class SceneRun:
@@ -453,10 +466,11 @@ class SceneRun:
         While iterated, at the first case (in scene order) that fails in the library.
     """
 
-    def __init__(self, scene: Scene, executor: Executor | None = None, progress: bool = False):
+    def __init__(self, scene: Scene, executor: Executor | None = None, progress: bool = False,
+                 encode=None):
         self.scene, self.count = scene, scene.case_count
         self.timing_s = 0.0
-        self._executor, self._progress = executor, progress
+        self._executor, self._progress, self._encode = executor, progress, encode
         self._speed_warnings = {}           # scene-wide messages, once each
         self._case_warnings = []
         self._per_speed = {}                # speed -> its per-speed fields
@@ -478,7 +492,10 @@ class SceneRun:
         bar = _progress_bar(self.count, self._progress)
         delivered = 0
         try:
-            for index, res in iter_chunked(run_cases, self.scene, self._executor, bar.update):
+            # the per-speed fields join the entries here: then the writers encode them
+            fn = run_cases if self._encode is None or per_speed else \
+                functools.partial(_solved_and_encoded, self._encode)
+            for index, res in iter_chunked(fn, self.scene, self._executor, bar.update):
                 if isinstance(res, Exception):
                     with _naming(self.scene.case(index), self.scene):
                         raise res

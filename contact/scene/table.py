@@ -92,12 +92,17 @@ class SweepTable:
             swept.append("speed")
         return swept
 
+    def note(self, res) -> None:
+        """Take in what the layout needs of a case (its inputs, the first time; its number
+        of zones), without making its row (made elsewhere: :class:`CaseEncoder`)."""
+        if self._inputs is None:
+            self._inputs = self.input_columns(res.entry["inputs"])
+        self._most_zones = max(self._most_zones, len(res.zones))
+
     def row(self, res) -> list:
         """A case's raw row (class docstring): int, float or None (an empty cell) each."""
         e = res.entry
-        if self._inputs is None:
-            self._inputs = self.input_columns(e["inputs"])
-        self._most_zones = max(self._most_zones, len(res.zones))
+        self.note(res)
         cells = [res.index] + [e["inputs"].get(k) for k in self._inputs] + [len(res.zones)]
         sifs = _zone_sifs(res) if self._sif else None
         for j, z in enumerate(res.zones):
@@ -189,7 +194,11 @@ class SweepCsv:
         self._rows = csv.writer(self._fh)
 
     def add(self, res) -> None:
-        self._rows.writerow([_cell(v) for v in self.table.row(res)])
+        if res.encoded is not None:                 # the raw row, made where it was solved
+            self.table.note(res)
+            self._fh.write(res.encoded[1])
+        else:
+            self._rows.writerow(raw_cells(self.table, res))
 
     def write(self, path) -> Path:
         """sweep.csv at ``path``: the header and one row per case added, in order."""
@@ -247,3 +256,8 @@ def to_dataframe(result):
         else:
             data[name] = np.array([np.nan if v is None else v for v in col], dtype=float)
     return pd.DataFrame(data, columns=columns)
+
+
+def raw_cells(table: SweepTable, res) -> list:
+    """A case's raw row of sweep.csv as the cells the csv module writes."""
+    return [_cell(v) for v in table.row(res)]
