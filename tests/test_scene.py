@@ -770,3 +770,14 @@ def test_zones_field_lists_one_zone_next_to_the_single_zone_fields():
     assert zone["index"] == 0 and zone["load"] == pytest.approx(0.01, rel=1e-12)
     assert zone["sif"] == case.entry["sif"] and set(zone["sif"]) == {"left"}
     assert zone["sif"]["left"] == pytest.approx(ref.sif["left"], rel=1e-10)
+
+
+def test_a_punch_that_cannot_be_built_fails_its_cases_by_name(monkeypatch):
+    """A library error while building a chunk's material or punch is each of its cases'
+    error: the run names the first case, as for an error while solving it."""
+    def broken(spec):
+        raise contact.PunchGeometryError("this face cannot be built here")
+    monkeypatch.setattr(contact.scene.run, "build_once", broken)
+    s = scene(CYL + "[motion]\nload = 0.01\nfriction = [0.0, 0.1]\n")
+    with pytest.raises(CaseError, match=r"case 0 .*this face cannot be built here"):
+        run_scene(s)

@@ -221,8 +221,11 @@ def _run_group(group) -> list:
     reported with the case it belongs to."""
     t0 = time.perf_counter()
     first = group[0]
-    material = build_once(first.material)
-    punch = build_once(first.punch)
+    try:
+        material = build_once(first.material)
+        punch = build_once(first.punch)
+    except (contact.ContactInputError, sie.SIEInputError) as exc:
+        return [exc] * len(group)             # each case of the group fails with it
     by_speed, early = {}, {}
     for case in group:
         if case.speed not in by_speed:
