@@ -176,7 +176,7 @@ class ContactResult:
     solution: object = field(default=None, repr=False)
     material: object = field(default=None, repr=False)
     _residual: float | None = field(default=None, repr=False)
-    # computes the residual where the solver has a faster way than _residual_of (a batch)
+    # computes the residual of this result where the solver has its own way (a batch)
     _residual_source: object = field(default=None, repr=False)
 
     # -- the zones ---------------------------------------------------------------
@@ -213,7 +213,7 @@ class ContactResult:
         to max abs(v') (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
         if self._residual is None:
             src = self._residual_source
-            self._residual = src() if src is not None else _residual_of(self)
+            self._residual = src(self) if src is not None else _residual_of(self)
         return self._residual
 
     @property

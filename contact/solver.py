@@ -15,7 +15,6 @@ is the side condition.  Index 0 (one corner): the free end is the root of load(L
 """
 from __future__ import annotations
 
-import functools
 import gc
 import warnings
 from contextlib import contextmanager
@@ -377,14 +376,17 @@ def _lockstep_results(material, punch, cases, steps, residual):
             constants=c.const, load=c.load, speed=c.speed, friction=c.friction,
             direction=c.direction, mu_f=c.mu_f, punch=punch, method="numeric",
             solution=sols[k], material=material, _residual=res[k],
-            _residual_source=functools.partial(_residual_alone, sols, k, punch, c)))
+            _residual_source=_residual_alone))
     return out
 
 
-def _residual_alone(sols, k, punch, case):
-    """The residual of solution k of a batch, as :func:`_residuals` gives it in the batch
-    (each row of that computation is its own: the same value either way)."""
-    return _residuals(sols.take([k]), punch, [case])[0]
+def _residual_alone(result):
+    """The residual of a result of the lockstep step on first access: :func:`_residuals` of
+    its solution as a batch of one (each row of that computation is its own: the same value
+    as in its batch)."""
+    case = _Case(result.constants, result.load, result.speed, result.friction,
+                 result.direction, result.mu_f)
+    return _residuals(sie.SolutionBatch.of([result.solution]), result.punch, [case])[0]
 
 
 def _residuals(sols, punch, cases):

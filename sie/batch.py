@@ -462,6 +462,28 @@ class SolutionBatch:
         piece = IntervalSolution(Interval(c0, d0), self.exponents[i], self.n, c, cons)
         return Solution((piece,), float(self.a[i]), float(self.b[i]), True, None)
 
+    @classmethod
+    def of(cls, solutions) -> "SolutionBatch":
+        """The batch of one-interval solutions without breaks (as :meth:`__getitem__` gives
+        them), all with the same index and n."""
+        pieces = [s.pieces[0] for s in solutions]
+        if not pieces or any(len(s.pieces) != 1 or p.remainder is not None
+                             for s, p in zip(solutions, pieces)):
+            raise InvalidIntervalError("SolutionBatch.of takes solutions on one interval each, "
+                                       "without breaks")
+        exps = tuple(p.exp for p in pieces)
+        if len({(e.kappa, p.n) for e, p in zip(exps, pieces)}) != 1:
+            raise InvalidIntervalError("SolutionBatch.of takes solutions of one index and n")
+        C = np.array([p.coefficients for p in pieces])
+        C.setflags(write=False)
+        cons = None if pieces[0].consistency is None else \
+            np.array([p.consistency for p in pieces])
+        return cls(np.array([(p.interval.c, p.interval.d) for p in pieces]),
+                   np.array([s.a for s in solutions]), np.array([s.b for s in solutions]),
+                   np.array([e.alpha for e in exps]), np.array([e.beta for e in exps]),
+                   exps[0].kappa, pieces[0].n, C, cons, exps,
+                   np.array([jacobi_moment_shifted(e.alpha_p1, e.beta_p1) for e in exps]))
+
     def take(self, indices) -> "SolutionBatch":
         """The batch of the equations at ``indices`` (in that order)."""
         idx = np.asarray(indices, dtype=int).reshape(-1)

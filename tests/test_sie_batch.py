@@ -653,3 +653,26 @@ def test_errors_are_sie_input_errors():
         sie.DominantBatch(a=0.0, b=0.0, **BB)
     with pytest.raises(sie.SIEInputError):
         sie.solve_batch(f_smooth, a=0.0, b=1.0, intervals=[(1.0, 0.0)], **BB)
+
+
+@pytest.mark.filterwarnings("ignore::sie.InconsistentEquationWarning")
+def test_batch_of_its_own_solutions_is_the_batch():
+    """SolutionBatch.of rebuilds a batch from the sie.Solution of each equation (what a
+    contact result keeps): the same arrays, and the same Cauchy limits; solutions on several
+    intervals, with breaks, or of different indices are refused."""
+    sb = sie.solve_batch(f_smooth, a=[0.3, -1.2, 4.0], b=[1.0, -2.0, 0.5],
+                         intervals=[(-1.0, 0.5), (0.0, 2.0), (-3.0, -1.0)], **BB)
+    again = sie.SolutionBatch.of([sb[i] for i in range(len(sb))])
+    for name in ("intervals", "a", "b", "alpha", "beta", "coefficients", "consistency", "mu0"):
+        assert np.array_equal(getattr(again, name), getattr(sb, name)), name
+    assert again.exponents == sb.exponents and (again.kappa, again.n) == (sb.kappa, sb.n)
+    u = np.array([-0.9, 0.0, 0.7])
+    assert np.array_equal(again.cauchy_limit_local(u), sb.cauchy_limit_local(u))
+    two = sie.solve(f_smooth, a=0.3, b=1.0, n=4, left="bounded", right="bounded",
+                    intervals=[(-1.0, 0.0), (0.5, 1.0)])
+    with pytest.raises(sie.InvalidIntervalError, match="one interval each"):
+        sie.SolutionBatch.of([two])
+    other = sie.solve(f_smooth, a=0.3, b=1.0, n=4, left="singular", right="bounded",
+                      intervals=[(-1.0, 0.0)])
+    with pytest.raises(sie.InvalidIntervalError, match="one index and n"):
+        sie.SolutionBatch.of([sb[0], other])
