@@ -2,10 +2,10 @@
 
 Cases that share a punch face and differ in the coefficients of the equation (friction and
 speed: a = N12 mu_f, b = N11) and in the load go through the first step of
-:func:`contact.continuation.follow_load` together -- first touch, the power-law prediction
-to the load, the side conditions there, the solution and its checks -- each stage one
-vectorised call (:func:`sie.functionals_batch`, :func:`sie.solve_batch`) instead of one per
-case.  It is the continuation's own step, in the cases where that step is the whole answer:
+:func:`contact.continuation.follow_load` together -- first touch, the power-law prediction to
+the load, the side conditions there, the solution and its checks -- each stage one vectorised
+call (:class:`sie.DominantBatch`) instead of one per case.  It is the continuation's own step,
+in the cases where that step is the whole answer:
 
 * the face is convex and lowest at one point, edge or flat stretch (one zone, whose gap opens
   by itself: no gap check), and homogeneous about an interior lowest point (the power law from
@@ -15,8 +15,9 @@ case.  It is the continuation's own step, in the cases where that step is the wh
   test: no Newton step), the zone stays on the face and holds no break, and p >= 0 at the check
   points (to the resolution of the solution).
 
-A case that fails any of these is marked and solved alone by the full continuation (events,
-Newton, refinement), so the answer is that of :func:`contact.solve` in every case.
+A case that fails any of these is left to the full continuation, solved alone (events,
+Newton, refinement); :func:`contact.solve` and :func:`contact.solve_batch` go this way for
+every case, a single solve as a batch of one.
 """
 from __future__ import annotations
 

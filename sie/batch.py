@@ -23,8 +23,8 @@ import numpy as np
 
 from ._jit import jit
 from .cauchy_kernels import series_forward_limit, series_kernel
-from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidIntervalError, SideConditionError,
-                     call_checked)
+from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidIntervalError,
+                     SideConditionError, call_checked)
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import N_BOUNDARY, _small_rule
 from .intervals import Interval

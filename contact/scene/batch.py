@@ -1,20 +1,23 @@
 """Running a scene's cases in chunks: in this process, in a process pool or on a Dask cluster.
 
 One task per case costs more than the case when the case is cheap (a cylindrical punch solves
-in ~0.1 ms within a chunk, ~0.3 ms alone; a Dask task costs 5-25 ms of CPU between the scheduler, the client and the worker
-on a loaded 2-core machine, a process-pool task ~0.1 ms plus pickling).  Cases therefore
-travel in chunks, and a chunk travels as a range of case indices with the scene they come
-from: the worker builds its cases itself (:meth:`contact.scene.spec.Scene.iter_cases`), so
-that the process that hands out the work neither builds nor pickles them one by one.  Chunks
-are
+in ~0.1 ms within a chunk, ~0.3 ms alone; a Dask task costs 5-25 ms of CPU between the
+scheduler, the client and the worker on a loaded 2-core machine, a process-pool task ~0.1 ms
+plus pickling).  Cases therefore travel in chunks, and a chunk travels as a range of case
+indices with the scene they come from: the worker builds its cases itself
+(:meth:`contact.scene.spec.Scene.iter_cases`), so that the process that hands out the work
+neither builds nor pickles them one by one.  Chunks are
 
 * consecutive in scene order: each worker computes the surface constants of a speed once and
   keeps them (:func:`contact.scene.run._shared_constants`, cached per process), and builds a
   material and a punch once per distinct spec (:func:`build_once`), so a chunk need not be
   cut where the speed changes;
 * sized to the work: a chunk holds about ``TARGET_CHUNK_S`` of solving, estimated from the
-  first chunk (solved in this process first), and there are at least ``CHUNKS_PER_WORKER``
-  chunks per worker so that a slow chunk does not leave the others idle.
+  first chunk (solved in this process first) and again from each chunk a worker finishes, and
+  there are at least ``CHUNKS_PER_WORKER`` chunks per worker so that a slow chunk does not
+  leave the others idle;
+* solved together where their cases share the material, the punch and the numerics
+  (:func:`contact.scene.run.run_cases`, :func:`contact.solve_batch`).
 
 Results come back in scene order (:func:`iter_chunked`), so that a sweep runs in memory that
 does not grow with its length: at most ``CHUNKS_AHEAD`` full chunks per worker are handed out

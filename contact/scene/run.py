@@ -434,7 +434,8 @@ def _solved_and_encoded(encode, cases) -> list:
 def iter_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
                encode=None) -> SceneRun:
     """The cases of a scene solved in chunks (:func:`run_cases`) in this process or through
-    ``executor``, delivered in scene order as they complete (:class:`SceneRun`); nothing is solved until it is iterated.
+    ``executor``, delivered in scene order as they complete (:class:`SceneRun`); nothing is
+    solved until it is iterated.
 
     Parameters are those of :func:`run_scene`, and ``encode``: a picklable callable applied
     to each result where it is solved (:class:`contact.scene.output.CaseEncoder`, from
