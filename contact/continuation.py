@@ -586,13 +586,18 @@ def _resolution(sol):
     small n: wiggles of that size are truncation, not a lost contact).  Kept for the last
     few solutions (immutable, hashed by identity): a state is checked, then tested for its
     resolution."""
-    tail = 1e-9
-    for piece in sol.pieces:
-        c = np.abs(piece.coefficients)
-        top = c.max() if c.size > 2 else 0.0
-        if top > 0.0:
-            tail = max(tail, 10.0 * float(c[-1] + c[-2]) / float(top))
-    return tail
+    return max([1e-9] + [float(series_tail(piece.coefficients)) for piece in sol.pieces])
+
+
+def series_tail(C):
+    """10 (|c_{n-1}| + |c_{n-2}|) / max |c| of each series along the last axis of C (0 for
+    a series of two terms or fewer, or all zero): what :func:`_resolution` forgives."""
+    c = np.abs(np.asarray(C))
+    if c.shape[-1] <= 2:
+        return np.zeros(c.shape[:-1])
+    top = np.max(c, axis=-1)
+    return np.where(top > 0.0, 10.0 * (c[..., -1] + c[..., -2])
+                    / np.where(top > 0.0, top, 1.0), 0.0)
 
 
 def _gap_samples(face, eq, state, m=400):

@@ -27,7 +27,7 @@ import numpy as np
 
 import sie
 
-from .continuation import _CHECK_U, _growth_exponent
+from .continuation import _CHECK_U, _growth_exponent, series_tail
 from .zones import _NINE, CORNER, FREE, Zone, _SIE_END
 
 __all__ = ["FirstSteps", "first_steps"]
@@ -166,11 +166,7 @@ def _side_conditions(eqs, slope, P, iv):
 def _pressure_ok(sols):
     """Which solutions pass p >= 0 at the check points of their zone, to the resolution of
     their series (:func:`contact.continuation._inspect` on one zone)."""
-    C = sols.coefficients
-    top_c = np.max(np.abs(C), axis=1)
-    tail = np.where(top_c > 0.0, 10.0 * (np.abs(C[:, -1]) + np.abs(C[:, -2]))
-                    / np.where(top_c > 0.0, top_c, 1.0), 0.0) if C.shape[1] > 2 else 0.0
-    tol = np.maximum(1e-9, tail)
+    tol = np.maximum(1e-9, series_tail(sols.coefficients))
     u = _CHECK_WEIGHT_U
     p = sols.weight_local(u) * sols.phi_local(u)
     top = np.maximum(np.max(np.abs(p), axis=1), np.finfo(float).tiny)

@@ -436,23 +436,31 @@ class _ClosedFormContactResult(ContactResult):
         return self.solution.hilbert_pressure(X)
 
 
+#: Where the residual is evaluated: 64 Chebyshev points of each zone (local coordinate).
+RESIDUAL_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
+
+
 def _residual_of(res):
     """Relative max residual of the dominant equation at 64 Chebyshev points per zone."""
     if res.method == "closed_form":
         return 0.0
-    u = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
-    X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0]) * u
-                        for z in res.zones])
-    f = res.punch.slope(X)
+    X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0])
+                        * RESIDUAL_U for z in res.zones])
     F = res.solution.cauchy_limit(X)         # H[p] + i p on the zones (Plemelj), one pass
-    psi = F.imag
-    hc = res.constants.N11 * F.real
-    lhs = res.constants.N12 * res.mu_f * psi + hc
-    # the scale of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its
-    # rounding is eps |N11| max|p|
-    scale = max(np.max(np.abs(f)), np.max(np.abs(hc)), abs(res.constants.N11) * np.max(np.abs(psi)),
-                np.finfo(float).tiny)
-    return float(np.max(np.abs(lhs - f)) / scale)
+    return float(relative_residual(res.punch.slope(X), F, res.constants.N11,
+                                   res.constants.N12 * res.mu_f))
+
+
+def relative_residual(f, F, N11, a):
+    """max abs(a p + N11 Hc[p] - f) / scale over the last axis, from F = Hc[p] + i p and
+    f = v' at the same points (N11, a: scalars, or columns for rows of points).  The scale
+    of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its rounding is
+    eps |N11| max|p|."""
+    psi, hc = F.imag, N11 * F.real
+    scale = np.maximum.reduce([np.max(np.abs(f), axis=-1), np.max(np.abs(hc), axis=-1),
+                               np.max(np.abs(N11 * psi), axis=-1),
+                               np.full(np.shape(f)[:-1], np.finfo(float).tiny)])
+    return np.max(np.abs(a * psi + hc - f), axis=-1) / scale
 
 
 def _sif(phi_end, ends, kinds, alpha, beta):

@@ -33,7 +33,8 @@ from .errors import (ContactInputError, ContactLossError, DirectionError, Fricti
                      check_finite)
 from .material import Orthotropic
 from .punches import Punch
-from .result import ContactResult, ContactZone, LoadCurve, _ClosedFormContactResult, _sif
+from .result import (RESIDUAL_U, ContactResult, ContactZone, LoadCurve,
+                     _ClosedFormContactResult, _sif, relative_residual)
 from .zones import CORNER, ZoneEquations
 
 __all__ = ["solve", "solve_batch", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
@@ -313,6 +314,11 @@ class _Case:
     direction: int
     mu_f: float
 
+    @property
+    def a(self) -> float:
+        """N12 mu_f, the coefficient of p in the equation (0 without friction)."""
+        return self.const.N12 * self.mu_f if self.mu_f != 0.0 else 0.0
+
 
 def _basis_choice(punch, n):
     """(n, adaptive): a polynomial slope of degree d is exact with d + 4 coefficients (the
@@ -334,7 +340,7 @@ def _numeric_cases(material, punch, cases, n, tol, errors="raise", residual=Fals
     if not adaptive:
         try:
             steps = first_steps(punch.as_face(), punch.slope, tuple(punch.breaks),
-                                [c.const.N12 * c.mu_f if c.mu_f != 0.0 else 0.0 for c in cases],
+                                [c.a for c in cases],
                                 [c.const.N11 for c in cases], [c.load for c in cases], n_use)
         except (ContactInputError, sie.SIEInputError):
             steps = None        # each case alone below: each raises (or returns) its error
@@ -390,23 +396,14 @@ def _residual_alone(result):
 
 
 def _residuals(sols, punch, cases):
-    """:attr:`ContactResult.residual` of each solution of a batch, in one pass (the same
-    check points and scale as :func:`contact.result._residual_of`)."""
-    u = _RESIDUAL_U
+    """:attr:`ContactResult.residual` of each solution of a batch, in one pass (the check
+    points and formula of :func:`contact.result._residual_of`)."""
     iv = sols.intervals
-    X = 0.5 * (iv[:, :1] + iv[:, 1:]) + 0.5 * (iv[:, 1:] - iv[:, :1]) * u
+    X = 0.5 * (iv[:, :1] + iv[:, 1:]) + 0.5 * (iv[:, 1:] - iv[:, :1]) * RESIDUAL_U
     f = punch.slope(X.ravel()).reshape(X.shape)
-    F = sols.cauchy_limit_local(u)
-    N11 = np.array([c.const.N11 for c in cases])[:, None]
-    a = np.array([c.const.N12 * c.mu_f for c in cases])[:, None]
-    psi, hc = F.imag, N11 * F.real
-    scale = np.maximum.reduce([np.max(np.abs(f), axis=1), np.max(np.abs(hc), axis=1),
-                               np.abs(N11[:, 0]) * np.max(np.abs(psi), axis=1),
-                               np.full(len(cases), np.finfo(float).tiny)])
-    return (np.max(np.abs(a * psi + hc - f), axis=1) / scale).tolist()
-
-
-_RESIDUAL_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)
+    return relative_residual(f, sols.cauchy_limit_local(RESIDUAL_U),
+                             np.array([c.const.N11 for c in cases])[:, None],
+                             np.array([c.a for c in cases])[:, None]).tolist()
 
 
 def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=None,

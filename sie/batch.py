@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._jit import jit
+from .cauchy import _FORWARD_GROWTH, f0_parameter_row
 from .cauchy_kernels import series_forward_limit, series_kernel
 from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidIntervalError,
                      SideConditionError, call_checked)
@@ -35,8 +36,6 @@ from .special import jacobi_moment_shifted
 
 __all__ = ["DominantBatch", "solve_batch", "functionals_batch", "SolutionBatch",
            "FunctionalsBatch"]
-
-_FORWARD_GROWTH = 30.0        # as sie.cauchy: the most the forward recurrence may amplify
 
 
 # --------------------------------------------------------------------------
@@ -520,8 +519,8 @@ class SolutionBatch:
         if not np.all(np.abs(u) < 1.0):
             raise EvaluationPointError("cauchy_limit_local needs points strictly inside (-1, 1)")
         z = u.astype(complex)
-        P = np.array([[float(-self.kappa), e.alpha, e.alpha_m1, e.sin, 0.0,
-                       m0 * (e.beta_p1 - e.alpha_p1) / (e.alpha_p1 + e.beta_p1), m0]
+        P = np.array([f0_parameter_row(-self.kappa, e.alpha, e.alpha_m1, e.sin, e.alpha_p1,
+                                       e.beta_p1, m0)
                       for e, m0 in zip(self.exponents, self.mu0.tolist())])
         out = np.empty((len(self), u.size), dtype=complex)
         _cauchy_limits(np.ascontiguousarray(self.coefficients), self.alpha, self.beta,
