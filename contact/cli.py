@@ -23,6 +23,7 @@ import contact
 import sie
 
 from . import scene as scenes
+from .solver import cyclic_gc_paused
 from .registry import KINDS
 
 #: The 14 relative speeds of Table 1 in Zhou, Lee & Jang 2014.
@@ -149,12 +150,12 @@ def cmd_run(args) -> int:
         writer = scenes.SceneWriter(scene, args.out, scene.case_count,
                                     figures=None if args.figures else False, table=progress)
     with writer:
-        with _executor(args.jobs, args.scheduler) as executor:
+        with _executor(args.jobs, args.scheduler) as executor, cyclic_gc_paused():
             run = scenes.iter_scene(scene, executor=executor, progress=progress,
                                     encode=writer.encoder())
-            for res in run:
+            for results in run.chunks():
                 with _writing_into(args.out):
-                    writer.add(res)
+                    writer.add_all(results)
         if progress:
             print(writer.table(run.timing_s), flush=True)
         messages = run.warnings                # a figure that cannot be drawn adds its own

@@ -22,7 +22,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import contact
-from contact.scene import parse_scene_text, run_scene
+from contact.scene import load_scene, parse_scene_text, run_scene
 from contact.scene.figures import MAX_CURVES
 from contact.scene.output import _writing_bar
 from contact.scene.spec import clean_linspace
@@ -143,6 +143,29 @@ def test_sweep_csv_of_two_zones_has_per_zone_columns(tmp_path):
             assert r[f"zone{j}_kappa"] == z["index"]
         assert {k: r[k] for k in ("n", "residual", "load_check")} == case["diagnostics"]
         assert r["load_check"] < 1e-12 and r["residual"] < 1e-10
+
+
+def test_sweep_csv_when_a_later_case_has_two_zones_equals_the_table(tmp_path):
+    """sweep.csv is written from the one-zone rows while every case has one zone; a case
+    with two (the W face at a light load, after heavy loads that close the gap) lays every
+    row out again with per-zone columns, the one-zone cases' second zone empty: the file
+    equals the table made from the kept results (SceneResult.table)."""
+    text = (SCENES / "w_face_two_zones.toml").read_text()
+    text = text.replace("load = 0.02", "load = [3.0, 2.5, 0.02]").replace(
+        '"pressure", "sigma_xx"', '"sif"').replace(
+        "x = { start = -1.25, stop = 1.25, num = 1001 }", "")
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    rc, _, err = run_cli("run", path, "--out", tmp_path / "out", "--quiet")
+    assert rc == 0, err
+    header, rows = read_sweep(tmp_path / "out" / "sweep.csv")
+    columns, table = run_scene(load_scene(path)).table()
+    assert header == columns and "zone2_x_left" in header
+    assert [[cell(c) for c in row] for row in rows] == table
+    zones = [row[columns.index("zones")] for row in table]
+    assert zones == [1, 1, 1, 1, 2, 2]                    # loads 3.0, 2.5 close the gap
+    first = table[0]
+    assert first[columns.index("zone2_x_left")] is None
 
 
 def test_sweep_table_sifs_and_a_single_case_lists_every_input(tmp_path):
@@ -413,8 +436,11 @@ def test_dumps_json_is_json(value):
     assert json.loads(dumps_json(value)) == json.loads(json.dumps(value))
     if not isinstance(value, (dict, list)):
         assert _json_scalar(value) == json.dumps(value)
-    elif isinstance(value, list) and not any(isinstance(v, (dict, list)) for v in value):
-        assert dumps_json(value) == json.dumps(value)
+    elif not any(isinstance(v, (dict, list))
+                 for v in (value.values() if isinstance(value, dict) else value)):
+        assert dumps_json(value) == json.dumps(value)         # scalars: on one line
+    else:
+        assert "\n" in dumps_json(value)                      # lists and tables: indented
 
 
 @pytest.mark.parametrize("bad", [float("nan"), float("inf"), [1.0, float("-inf")]])

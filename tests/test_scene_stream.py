@@ -387,23 +387,30 @@ def test_memory_does_not_grow_with_the_sweep(tmp_path, monkeypatch):
 # --------------------------------------------------------------------------
 # outputs encoded where the cases are solved
 # --------------------------------------------------------------------------
+@pytest.mark.parametrize("quiet", [False, True])
 @pytest.mark.parametrize("fields", [["ends", "exponents", "sif", "pressure"],
                                     ["zones", "sif"], ["ends", "constants"]])
-def test_cases_encoded_by_the_workers_write_the_same_files(tmp_path, fields):
+def test_cases_encoded_by_the_workers_write_the_same_files(tmp_path, fields, quiet):
     """A writer's text of each case made where the case is solved (iter_scene's encode=,
     here by the workers of a pool) gives result.json and sweep.csv byte for byte as the
     writer's own formatting does (per-speed fields, "constants", join the entries in the
-    parent: those cases are formatted there)."""
+    parent: those cases are formatted there).  A writer that keeps nothing but the text
+    (no printed table, no curves) gets lean results, fed a chunk at a time."""
     s = parse_scene_text(SHARED_X.replace('["ends", "exponents", "pressure"]',
                                           json.dumps(fields)))
 
     def write(out, encode, executor=None):
-        with SceneWriter(s, out, s.case_count, figures=False) as writer:
-            run = iter_scene(s, executor=executor,
-                             encode=writer.encoder() if encode else None)
-            for res in run:
-                assert (res.encoded is not None) == (encode and "constants" not in fields)
-                writer.add(res)
+        with SceneWriter(s, out, s.case_count, figures=False, table=not quiet) as writer:
+            encoder = writer.encoder() if encode else None
+            assert encoder is None or encoder.lean == (quiet and "pressure" not in fields)
+            run = iter_scene(s, executor=executor, encode=encoder)
+            for results in run.chunks():
+                for res in results:
+                    assert (res.encoded is not None) == (encode and "constants" not in fields)
+                    if res.encoded is not None and encoder.lean:
+                        assert res.entry == {"inputs": s.case(res.index).inputs}
+                        assert res.zones == [] and res.diagnostics == {}
+                writer.add_all(results)
             writer.finish(1.0, run.warnings)
         return {name: (out / name).read_bytes() for name in ("result.json", "sweep.csv")}
     plain = write(tmp_path / "plain", False)

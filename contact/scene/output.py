@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import csv
 import dataclasses
+import functools
 import io
 import itertools
 import json
@@ -23,6 +24,7 @@ import shutil
 import tempfile
 import zipfile
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -32,7 +34,7 @@ from .run import (SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _json_case, _j
                   _json_tail, progress_bar)
 from .spec import CURVE_FIELDS, Scene
 from .summary import TableSummary
-from .table import SweepCsv, SweepTable, raw_cells
+from .table import SweepCsv, SweepTable, row_lines
 
 # --------------------------------------------------------------------------
 # writing: result.json, CSV, PNG, the printed table
@@ -63,8 +65,8 @@ def write_outputs(result: SceneResult, out_dir, *, figures: bool | None = None,
         The files written.
     """
     with SceneWriter(result.scene, out_dir, len(result.cases), figures=figures) as writer:
-        for res in result.cases:
-            writer.add(res)
+        for k in range(0, len(result.cases), _WRITE_SLICE):
+            writer.add_all(result.cases[k:k + _WRITE_SLICE])
         return writer.finish(result.timing_s, result.warnings, progress=progress)
 
 
@@ -126,8 +128,10 @@ class SceneWriter:
 
     def encoder(self) -> "CaseEncoder":
         """What makes this writer's text of a case where the case is solved (pass it to
-        :func:`contact.scene.iter_scene` as ``encode``)."""
-        return CaseEncoder(self.scene)
+        :func:`contact.scene.iter_scene` as ``encode``); a lean one when the writer keeps
+        nothing of a case but its text (no printed table, no curves, no maps)."""
+        lean = self.summary is None and not self.curve_fields and self._maps is None
+        return CaseEncoder(self.scene, lean=lean)
 
     def _open(self, part):
         self._files.append(part)
@@ -142,8 +146,18 @@ class SceneWriter:
 
     def add(self, res: CaseResult) -> None:
         """Write (or spool) one case, the next in scene order."""
-        self._json.add(res)
-        self._sweep.add(res)
+        self.add_all([res])
+
+    def add_all(self, results) -> None:
+        """Write (or spool) cases, the next ones in scene order (a list: one write per file
+        for the lot)."""
+        self._json.add_all(results)
+        self._sweep.add_all(results)
+        for res in results:
+            self._keep(res)
+
+    def _keep(self, res: CaseResult) -> None:
+        """A case's curves, map and table row; the case itself if a figure draws it."""
         for name, columns in self._curves.items():
             x, values = res.curve(name)
             columns.add(res.index, res.label if self.scene.sweep else name, x, values)
@@ -261,10 +275,15 @@ class ResultJson:
                        + f"{_INDENT}{json.dumps('cases')}: [")
         self._count = 0
 
-    def add(self, res: CaseResult) -> None:
-        text = res.encoded[0] if res.encoded is not None else case_json(res)
-        self._fh.write(("\n" if self._count == 0 else ",\n") + 2 * _INDENT + text)
-        self._count += 1
+    def add_all(self, results) -> None:
+        """The entries of cases, the next ones."""
+        if not results:
+            return
+        sep = ",\n" + 2 * _INDENT
+        self._fh.write(("\n" + 2 * _INDENT if self._count == 0 else sep) + sep.join(
+            res.encoded.json if res.encoded is not None else case_json(res)
+            for res in results))
+        self._count += len(results)
 
     def finish(self, timing_s: float, messages) -> Path:
         """Write the keys after ``cases`` and close the file."""
@@ -283,22 +302,43 @@ def case_json(res: CaseResult) -> str:
     return dumps_json(_json_case(res), _INDENT, 2)
 
 
-class CaseEncoder:
-    """What the writers make of a case on its own -- its entry of result.json and its raw
-    row of sweep.csv, as text -- made where the case is solved (a worker of an executor:
-    :func:`contact.scene.iter_scene`'s ``encode``), so that the process that writes the
-    files copies them instead of formatting them (~30 us a case, which bounded how many
-    workers it could keep busy).  A picklable callable: ``encoder(res)`` sets
-    ``res.encoded`` and returns ``res``."""
+class CaseText(NamedTuple):
+    """A case as the writers write it (:class:`CaseEncoder`)."""
+    #: Its entry of result.json, at its indentation there.
+    json: str
+    #: Its raw row of sweep.csv (:class:`contact.scene.table.SweepTable`), a line of CSV.
+    row: str
+    #: Its row of sweep.csv when every case has one zone; None if it has several.
+    single_zone_row: str | None
+    #: How many contact zones it has.
+    zones: int
 
-    def __init__(self, scene: Scene):
-        self.scene = scene
+
+class CaseEncoder:
+    """What the writers make of a case on its own -- its entry of result.json and its rows
+    of sweep.csv, as text (:class:`CaseText`) -- made where the case is solved (a worker of
+    an executor: :func:`contact.scene.iter_scene`'s ``encode``), so that the process that
+    writes the files copies them instead of formatting them (~20 us a case, which bounded
+    how many workers it could keep busy).  A picklable callable: ``encoder(res)`` returns
+    ``res`` with ``res.encoded`` set.
+
+    ``lean``: return, instead of ``res``, the case reduced to what a writer that keeps
+    nothing else of it needs: its index, label, time, warnings, inputs (``entry`` holds
+    only them) and its text; its fields are in the text only (``zones`` empty,
+    ``diagnostics`` empty).  Such a result crosses from a worker in a tenth of the time
+    (measured: 0.5 against 4.8 us a case to unpickle, and as much again to free).
+    """
+
+    def __init__(self, scene: Scene, lean: bool = False):
+        self.scene, self.lean = scene, lean
         self._table = SweepTable(scene, scene.case_count)
 
     def __call__(self, res: CaseResult) -> CaseResult:
-        buf = io.StringIO()
-        csv.writer(buf).writerow(raw_cells(self._table, res))
-        res.encoded = (case_json(res), buf.getvalue())
+        text = CaseText(case_json(res), *row_lines(self._table, res), len(res.zones))
+        if self.lean:
+            return CaseResult(res.index, res.label, {"inputs": res.entry["inputs"]},
+                              res.time_s, res.warnings, encoded=text)
+        res.encoded = text
         return res
 
 
@@ -496,6 +536,8 @@ class SubsurfaceFiles:
         self._csv_file.close()
 
 
+#: Cases written at a time by :func:`write_outputs`.
+_WRITE_SLICE = 1024
 _CONTAINERS = frozenset((dict, list, tuple))
 _INDENT = "  "
 #: One encoder for every call (json.dumps with an option builds a new one each time).
@@ -521,17 +563,55 @@ def _json_scalar(v) -> str:
 
 
 def dumps_json(obj, indent: str = _INDENT, _level: int = 0) -> str:
-    """JSON text with tables indented and lists of numbers on one line (readable, compact)."""
-    pad, inner = indent * _level, indent * (_level + 1)
+    """JSON text laid out to be read: a list or table of scalars (numbers, strings, booleans,
+    null) on one line, as ``json.dumps`` writes it; a list or table holding lists or tables
+    one item a line, indented.  A case of result.json is a few lines: its inputs, ends,
+    exponents, diagnostics, one line each.
+
+    The one-line parts are written by the json module's C encoder (most of an entry: a few
+    microseconds a case, against ~15 with a number at a time here); values it does not take
+    as they are (numpy scalars, NaN) go the slow way, which says what is wrong."""
+    t = type(obj)
+    if (t is list or t is tuple) and _ATOMS.issuperset(map(type, obj)) or \
+            t is dict and _ATOMS.issuperset(map(type, obj.values())) and \
+            all(type(k) is str for k in obj):
+        try:
+            return _ENCODE_LINE(obj)
+        except ValueError:                     # NaN or infinity: said with its value below
+            pass
     if isinstance(obj, dict):
-        if not obj:
-            return "{}"
+        if not _CONTAINERS.intersection(map(type, obj.values())):
+            return "{" + ", ".join(f"{encode_basestring_ascii(str(k))}: {_json_scalar(v)}"
+                                   for k, v in obj.items()) + "}"
+        inner = indent * (_level + 1)
         items = [f"{inner}{encode_basestring_ascii(str(k))}: {dumps_json(v, indent, _level + 1)}"
                  for k, v in obj.items()]
-        return "{\n" + ",\n".join(items) + "\n" + pad + "}"
+        return "{\n" + ",\n".join(items) + "\n" + indent * _level + "}"
     if isinstance(obj, (list, tuple)):
-        if not _CONTAINERS.intersection(map(type, obj)):     # numbers (strings) only
+        if not _CONTAINERS.intersection(map(type, obj)):     # scalars only
             return "[" + ", ".join(map(_json_scalar, obj)) + "]"
+        inner = indent * (_level + 1)
         items = [inner + dumps_json(v, indent, _level + 1) for v in obj]
-        return "[\n" + ",\n".join(items) + "\n" + pad + "]"
+        return "[\n" + ",\n".join(items) + "\n" + indent * _level + "]"
     return _json_scalar(obj)
+
+
+#: The JSON scalars (exact types) the C encoder writes as :func:`_json_scalar` does.
+_ATOMS = frozenset((float, int, str, bool, type(None)))
+
+
+def _c_encoder(item_separator: str):
+    """obj -> its JSON text, by the json module's C encoder (NaN and infinity refused, no
+    check for circular references: the data are made here), made once
+    (``JSONEncoder.encode`` makes a new one per call, which costs more than encoding a table
+    of five numbers); the json module's encoder where its C accelerator is missing."""
+    make = json.encoder.c_make_encoder
+    if make is None:                           # pragma: no cover - a Python without _json
+        return json.JSONEncoder(allow_nan=False, separators=(item_separator, ": ")).encode
+    chunks = make(None, None, encode_basestring_ascii, None, ": ", item_separator,
+                  False, False, False)
+    return lambda obj: "".join(chunks(obj, 0))
+
+
+#: A list or table of scalars on one line.
+_ENCODE_LINE = _c_encoder(", ")

@@ -19,7 +19,7 @@ import sie
 
 from contact.solver import cyclic_gc_paused
 
-from .batch import build_once, iter_chunked
+from .batch import build_once, iter_chunks
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
                    SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
@@ -53,9 +53,10 @@ class CaseResult:
     diagnostics : dict
         The solver's diagnostics (:func:`diagnostics`): ``n``, ``residual``, ``load_check``;
         written to result.json after the fields, and to sweep.csv.
-    encoded : (str, str) or None
-        Its entry of result.json and its raw row of sweep.csv as text, made where it was
-        solved (:class:`contact.scene.output.CaseEncoder`); None: the writers make them.
+    encoded : contact.scene.output.CaseText or None
+        Its entry of result.json and its rows of sweep.csv as text, made where it was
+        solved (:class:`contact.scene.output.CaseEncoder`; a lean encoder leaves only this,
+        the inputs and the warnings); None: the writers make them.
     """
     index: int
     label: str
@@ -486,11 +487,17 @@ class SceneRun:
         return list(self._speed_warnings) + self._case_warnings
 
     def __iter__(self):
+        return itertools.chain.from_iterable(self._results)
+
+    def chunks(self):
+        """The results a chunk at a time (lists of :class:`CaseResult`, in scene order): the
+        same run as iterating it, for a consumer that takes cases in bulk
+        (:meth:`contact.scene.SceneWriter.add_all`)."""
         return self._results
 
     def _solve(self):
-        """The generator behind iteration: solve, add the per-speed fields, name a failing
-        case, collect warnings, time."""
+        """The generator behind iteration, a chunk at a time: solve, add the per-speed
+        fields, name a failing case, collect warnings, time."""
         per_speed = any(name in SPEED_FIELDS for name in self.scene.fields)
         t0 = time.perf_counter()
         bar = _progress_bar(self.count, self._progress)
@@ -499,21 +506,26 @@ class SceneRun:
             # the per-speed fields join the entries here: then the writers encode them
             fn = run_cases if self._encode is None or per_speed else \
                 functools.partial(_solved_and_encoded, self._encode)
-            for index, res in iter_chunked(fn, self.scene, self._executor, bar.update):
-                if isinstance(res, Exception):
-                    with _naming(self.scene.case(index), self.scene):
-                        raise res
-                delivered += 1
+            for items in iter_chunks(fn, self.scene, self._executor, bar.update):
+                failure = items.pop() if isinstance(items[-1][1], Exception) else None
+                results = [res for _, res in items]
+                delivered += len(results)
                 if per_speed:
-                    speed = res.entry["inputs"]["speed"]
-                    res.entry = _with_speed_fields(res.entry, self._speed_fields(speed),
-                                                   self.scene.fields)
+                    for res in results:
+                        speed = res.entry["inputs"]["speed"]
+                        res.entry = _with_speed_fields(res.entry, self._speed_fields(speed),
+                                                       self.scene.fields)
                 self._case_warnings += [f"case {res.index} ({res.label}): {w}"
-                                        for w in res.warnings]
+                                        for res in results for w in res.warnings]
                 self.timing_s += time.perf_counter() - t0
                 t0 = None                          # the consumer's time is not the run's
-                yield res
+                if results:
+                    yield results
                 t0 = time.perf_counter()
+                if failure is not None:                # after the cases before it
+                    index, exc = failure
+                    with _naming(self.scene.case(index), self.scene):
+                        raise exc
             if delivered != self.count:            # a sweep is never cut short silently
                 raise RuntimeError(f"{self.scene.source}: {delivered} of {self.count} cases "
                                    "came back from the runner; please report")

@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import csv
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -97,7 +98,9 @@ class SweepTable:
         of zones), without making its row (made elsewhere: :class:`CaseEncoder`)."""
         if self._inputs is None:
             self._inputs = self.input_columns(res.entry["inputs"])
-        self._most_zones = max(self._most_zones, len(res.zones))
+        zones = res.encoded.zones if res.encoded is not None else len(res.zones)
+        if zones > self._most_zones:
+            self._most_zones = zones
 
     def row(self, res) -> list:
         """A case's raw row (class docstring): int, float or None (an empty cell) each."""
@@ -145,15 +148,21 @@ class SweepTable:
     def lay_out(self, raw: list, blank=None) -> list:
         """A raw row (:meth:`row`, or its cells as text) in the table's columns, ``blank`` in
         the cells of zones the case does not have."""
+        if not self.several_zones:
+            return self.single_zone_row(raw)
         start = 1 + len(self._inputs)
         zones = int(raw[start])
         width = len(self._zone_keys)
         end = start + 1 + zones * width
-        if self.several_zones:
-            missing = [blank] * ((self._most_zones - zones) * width)
-            return raw[:end] + missing + raw[end:]
+        return raw[:end] + [blank] * ((self._most_zones - zones) * width) + raw[end:]
+
+    def single_zone_row(self, raw: list) -> list:
+        """The raw row of a case with one zone in the columns of a table of such cases
+        (without the number of zones and the zone's share of the load): its row of sweep.csv
+        when every case of the sweep has one zone."""
+        start = 1 + len(self._inputs)
         kept = [raw[start + 1 + k] for k, key in enumerate(self._zone_keys) if key != "load"]
-        return raw[:start] + kept + raw[end:]
+        return raw[:start] + kept + raw[start + 1 + len(self._zone_keys):]
 
 
 def _zone_sifs(res) -> list | None:
@@ -178,43 +187,77 @@ class SweepCsv:
     """sweep.csv written one case at a time: each case's raw row (:class:`SweepTable`) goes to
     a spool file as it comes, and :meth:`write` lays the rows out under their header.
 
+    While every case has one zone (and ``"zones"`` is not asked) each case's row as the
+    table of such a sweep has it (:meth:`SweepTable.single_zone_row`) goes to a second spool,
+    which is then sweep.csv's body as it stands: a sweep of 1e5 cases is not read back and
+    laid out again at the end (~0.7 s in the process that writes, while the workers wait).
+
     Parameters
     ----------
     scene : Scene
     count : int
         How many cases will be added.
     spool : Path
-        The file the raw rows go to (removed by :meth:`write`).
+        The file the raw rows go to (removed by :meth:`write`); the one-zone rows go to
+        ``spool`` with the suffix ``.single``.
     """
 
     def __init__(self, scene, count: int, spool):
         self.table = SweepTable(scene, count)
         self._spool = Path(spool)
         self._fh = open(self._spool, "w", newline="", encoding="utf-8")
-        self._rows = csv.writer(self._fh)
+        self._single_path = self._spool.with_suffix(".single")
+        self._single = None if "zones" in scene.fields else \
+            open(self._single_path, "w", newline="", encoding="utf-8")
 
-    def add(self, res) -> None:
-        if res.encoded is not None:                 # the raw row, made where it was solved
-            self.table.note(res)
-            self._fh.write(res.encoded[1])
-        else:
-            self._rows.writerow(raw_cells(self.table, res))
+    def add_all(self, results) -> None:
+        """The rows of cases, the next ones (made where the cases were solved,
+        :class:`contact.scene.output.CaseEncoder`, or here)."""
+        note, raw_rows, single_rows = self.table.note, [], []
+        for res in results:
+            if res.encoded is not None:
+                note(res)
+                raw, single = res.encoded.row, res.encoded.single_zone_row
+            else:
+                raw, single = row_lines(self.table, res)
+            raw_rows.append(raw)
+            single_rows.append(single)
+        self._fh.write("".join(raw_rows))
+        if self._single is not None:
+            if None in single_rows:               # a case with several zones: laid out later
+                self._drop_single()
+            else:
+                self._single.write("".join(single_rows))
+
+    def _drop_single(self) -> None:
+        self._single.close()
+        self._single_path.unlink()
+        self._single = None
 
     def write(self, path) -> Path:
         """sweep.csv at ``path``: the header and one row per case added, in order."""
         path = Path(path)
         self._fh.close()
-        with open(self._spool, newline="", encoding="utf-8") as raw, \
-                open(path, "w", newline="", encoding="utf-8") as fh:
-            w = csv.writer(fh)
-            w.writerow(self.table.columns())
-            w.writerows(self.table.lay_out(row, "") for row in csv.reader(raw))
+        with open(path, "w", newline="", encoding="utf-8") as fh:
+            csv.writer(fh).writerow(self.table.columns())
+            if self._single is not None and not self.table.several_zones:
+                self._single.close()
+                with open(self._single_path, newline="", encoding="utf-8") as body:
+                    shutil.copyfileobj(body, fh)
+            else:
+                w = csv.writer(fh)
+                with open(self._spool, newline="", encoding="utf-8") as raw:
+                    w.writerows(self.table.lay_out(row, "") for row in csv.reader(raw))
+        if self._single is not None:
+            self._drop_single()
         self._spool.unlink()
         return path
 
     def close(self) -> None:
-        """Close the spool file (left for its directory's owner to remove)."""
+        """Close the spool files (left for their directory's owner to remove)."""
         self._fh.close()
+        if self._single is not None:
+            self._single.close()
 
 
 def _plain(v):
@@ -261,3 +304,18 @@ def to_dataframe(result):
 def raw_cells(table: SweepTable, res) -> list:
     """A case's raw row of sweep.csv as the cells the csv module writes."""
     return [_cell(v) for v in table.row(res)]
+
+
+def row_lines(table: SweepTable, res) -> tuple:
+    """(its raw row, its row in a sweep of one-zone cases or None if it has several zones)
+    of a case, as lines of CSV text (:class:`SweepCsv`)."""
+    cells = raw_cells(table, res)
+    single = _csv_line(table.single_zone_row(cells)) if len(res.zones) == 1 else None
+    return _csv_line(cells), single
+
+
+def _csv_line(cells) -> str:
+    """A row of sweep.csv as the csv module writes it: its cells are numbers and empty
+    cells, which it writes as they are (nothing to quote; never a lone empty cell, the case
+    index comes first), ending in its "\\r\\n"."""
+    return ",".join(cells) + "\r\n"
