@@ -165,12 +165,13 @@ from __future__ import annotations
 from .output import SceneWriter, check_out_dir, write_outputs
 from .summary import format_table
 from .parse import default_scene, load_scene, parse_scene_text
-from .run import (CaseResult, SceneResult, SceneRun, SubsurfaceMap, iter_scene, run_case,
-                  run_cases, run_scene)
+from .run import (CaseResult, CaseText, SceneResult, SceneRun, SubsurfaceMap, iter_scene,
+                  run_case, run_cases, run_scene)
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,
                    Numerics, PunchSpec, Scene, SceneError, SubsurfaceGrid, XGrid)
 
-__all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "SceneResult", "SceneRun",
+__all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "CaseText", "SceneResult",
+           "SceneRun",
            "MaterialSpec", "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics",
            "load_scene", "parse_scene_text", "default_scene", "run_scene", "iter_scene",
            "run_case", "run_cases", "write_outputs", "SceneWriter", "check_out_dir",

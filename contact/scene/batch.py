@@ -137,8 +137,8 @@ def iter_chunks(fn, source, executor, on_done):
     None (or fewer than two cases): every case here, in chunks of about ``TARGET_CHUNK_S``
     of work (sized from the chunk before; ``_PROBE`` cases first, ``SERIAL_CHUNK`` at most:
     the progress moves a few times a second).  Otherwise
-    the first ``_PROBE`` cases run here as one chunk (their time sizes the chunks:
-    :func:`chunk_size`), the rest
+    the first ``_PROBE`` cases run here as two chunks (the second's time sizes the chunks:
+    :func:`chunk_size`; the first warms this process up), the rest
     go to ``executor`` as ranges of indices (:func:`run_range`), at most ``CHUNKS_AHEAD``
     full chunks per worker past the first case not yet delivered.  Once a case fails, the
     chunks after it are cancelled and those before it awaited.  ``on_done(k)`` is called as
@@ -159,13 +159,18 @@ def iter_chunks(fn, source, executor, on_done):
             size = max(1, min(SERIAL_CHUNK, int(TARGET_CHUNK_S / max(per_case, 1e-6))))
             start = stop
         return
-    probe = min(_PROBE, total)
-    t0 = time.perf_counter()
-    items, failed = _up_to_failure(_run_here(fn, source, 0, probe, on_done))
-    yield items
-    if failed:
-        return
-    per_case = (time.perf_counter() - t0) / probe
+    # the probe in two halves: the first warms this process up (numba's cache, the
+    # material's constants: ~10 ms a case), the second is timed
+    probe, per_case = min(_PROBE, total), math.inf
+    for start, stop in ((0, probe // 2), (probe // 2, probe)):
+        if stop == start:
+            continue
+        t0 = time.perf_counter()
+        items, failed = _up_to_failure(_run_here(fn, source, start, stop, on_done))
+        yield items
+        if failed:
+            return
+        per_case = (time.perf_counter() - t0) / (stop - start)
     yield from _windowed(fn, source, executor, probe, total, per_case,
                          worker_count(executor), on_done)
 

@@ -24,14 +24,13 @@ import shutil
 import tempfile
 import zipfile
 from pathlib import Path
-from typing import NamedTuple
 
 import numpy as np
 
 from .figures import (MAX_CURVES, SUBSURFACE_PANELS, _write_curve_figures,
                       _write_subsurface_figures, evenly_spaced)
-from .run import (SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _json_case, _json_head,
-                  _json_tail, progress_bar)
+from .run import (SUBSURFACE_QUANTITIES, CaseResult, CaseText, SceneResult, _json_case,
+                  _json_head, _json_tail, case_text, progress_bar)
 from .spec import CURVE_FIELDS, Scene
 from .summary import TableSummary
 from .table import SweepCsv, SweepTable, row_lines
@@ -130,8 +129,13 @@ class SceneWriter:
         """What makes this writer's text of a case where the case is solved (pass it to
         :func:`contact.scene.iter_scene` as ``encode``); a lean one when the writer keeps
         nothing of a case but its text (no printed table, no curves, no maps)."""
-        lean = self.summary is None and not self.curve_fields and self._maps is None
-        return CaseEncoder(self.scene, lean=lean)
+        return CaseEncoder(self.scene, lean=self._lean)
+
+    @property
+    def _lean(self) -> bool:
+        """Whether it keeps nothing of a case but its text: it takes CaseText in place of
+        results."""
+        return self.summary is None and not self.curve_fields and self._maps is None
 
     def _open(self, part):
         self._files.append(part)
@@ -150,9 +154,13 @@ class SceneWriter:
 
     def add_all(self, results) -> None:
         """Write (or spool) cases, the next ones in scene order (a list: one write per file
-        for the lot)."""
+        for the lot): :class:`CaseResult`, or :class:`~contact.scene.run.CaseText` from
+        this writer's lean :meth:`encoder`."""
         self._json.add_all(results)
         self._sweep.add_all(results)
+        if self._lean:                          # nothing to keep (see encoder)
+            self._added += len(results)
+            return
         for res in results:
             self._keep(res)
 
@@ -280,9 +288,10 @@ class ResultJson:
         if not results:
             return
         sep = ",\n" + 2 * _INDENT
+        texts = [case_text(res) for res in results]
         self._fh.write(("\n" + 2 * _INDENT if self._count == 0 else sep) + sep.join(
-            res.encoded.json if res.encoded is not None else case_json(res)
-            for res in results))
+            text.json if text is not None else case_json(res)
+            for res, text in zip(results, texts)))
         self._count += len(results)
 
     def finish(self, timing_s: float, messages) -> Path:
@@ -302,42 +311,26 @@ def case_json(res: CaseResult) -> str:
     return dumps_json(_json_case(res), _INDENT, 2)
 
 
-class CaseText(NamedTuple):
-    """A case as the writers write it (:class:`CaseEncoder`)."""
-    #: Its entry of result.json, at its indentation there.
-    json: str
-    #: Its raw row of sweep.csv (:class:`contact.scene.table.SweepTable`), a line of CSV.
-    row: str
-    #: Its row of sweep.csv when every case has one zone; None if it has several.
-    single_zone_row: str | None
-    #: How many contact zones it has.
-    zones: int
-
-
 class CaseEncoder:
     """What the writers make of a case on its own -- its entry of result.json and its rows
-    of sweep.csv, as text (:class:`CaseText`) -- made where the case is solved (a worker of
-    an executor: :func:`contact.scene.iter_scene`'s ``encode``), so that the process that
-    writes the files copies them instead of formatting them (~20 us a case, which bounded
-    how many workers it could keep busy).  A picklable callable: ``encoder(res)`` returns
-    ``res`` with ``res.encoded`` set.
-
-    ``lean``: return, instead of ``res``, the case reduced to what a writer that keeps
-    nothing else of it needs: its index, label, time, warnings, inputs (``entry`` holds
-    only them) and its text; its fields are in the text only (``zones`` empty,
-    ``diagnostics`` empty).  Such a result crosses from a worker in a tenth of the time
-    (measured: 0.5 against 4.8 us a case to unpickle, and as much again to free).
+    of sweep.csv, as text (:class:`~contact.scene.run.CaseText`) -- made where the case is
+    solved (a worker of an executor: :func:`contact.scene.iter_scene`'s ``encode``), so that
+    the process that writes the files copies them instead of formatting them (~20 us a
+    case, which bounded how many workers it could keep busy).  A picklable callable:
+    ``encoder(res)`` returns ``res`` with ``res.encoded`` set, or, ``lean``, the
+    :class:`~contact.scene.run.CaseText` alone (for a writer that keeps nothing else of a
+    case: :meth:`SceneWriter.encoder`).
     """
 
     def __init__(self, scene: Scene, lean: bool = False):
         self.scene, self.lean = scene, lean
         self._table = SweepTable(scene, scene.case_count)
 
-    def __call__(self, res: CaseResult) -> CaseResult:
-        text = CaseText(case_json(res), *row_lines(self._table, res), len(res.zones))
+    def __call__(self, res: CaseResult):
+        text = CaseText(res.index, res.label, res.time_s, tuple(res.warnings), case_json(res),
+                        *row_lines(self._table, res), len(res.zones))
         if self.lean:
-            return CaseResult(res.index, res.label, {"inputs": res.entry["inputs"]},
-                              res.time_s, res.warnings, encoded=text)
+            return text
         res.encoded = text
         return res
 

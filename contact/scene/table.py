@@ -38,6 +38,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .run import CaseText, case_text
+
 SUBSURFACE_COLUMNS = ("value", "X", "Y", "depth", "half_width", "depth_over_a")
 CONSTANTS_COLUMNS = ("N11", "N12", "N21", "N22", "rayleigh_speed", "eta_product", "eta_sum")
 DIAGNOSTICS_COLUMNS = ("n", "residual", "load_check")
@@ -94,11 +96,14 @@ class SweepTable:
         return swept
 
     def note(self, res) -> None:
-        """Take in what the layout needs of a case (its inputs, the first time; its number
-        of zones), without making its row (made elsewhere: :class:`CaseEncoder`)."""
+        """Take in what the layout needs of a case (a CaseResult or its CaseText: its inputs,
+        the first time; its number of zones), without making its row (made elsewhere:
+        :class:`contact.scene.output.CaseEncoder`)."""
+        text = case_text(res)
         if self._inputs is None:
-            self._inputs = self.input_columns(res.entry["inputs"])
-        zones = res.encoded.zones if res.encoded is not None else len(res.zones)
+            self._inputs = self.input_columns(res.entry["inputs"] if type(res) is not CaseText
+                                              else self.scene.case(res.index).inputs)
+        zones = text.zones if text is not None else len(res.zones)
         if zones > self._most_zones:
             self._most_zones = zones
 
@@ -215,9 +220,10 @@ class SweepCsv:
         :class:`contact.scene.output.CaseEncoder`, or here)."""
         note, raw_rows, single_rows = self.table.note, [], []
         for res in results:
-            if res.encoded is not None:
+            text = case_text(res)
+            if text is not None:
                 note(res)
-                raw, single = res.encoded.row, res.encoded.single_zone_row
+                raw, single = text.row, text.single_zone_row
             else:
                 raw, single = row_lines(self.table, res)
             raw_rows.append(raw)
