@@ -103,7 +103,10 @@ class SweepTable:
         if self._inputs is None:
             self._inputs = self.input_columns(res.entry["inputs"] if type(res) is not CaseText
                                               else self.scene.case(res.index).inputs)
-        zones = text.zones if text is not None else len(res.zones)
+        self.note_zones(text.zones if text is not None else len(res.zones))
+
+    def note_zones(self, zones: int) -> None:
+        """Take in a case's number of zones (the most of several cases')."""
         if zones > self._most_zones:
             self._most_zones = zones
 
@@ -218,18 +221,22 @@ class SweepCsv:
     def add_all(self, results) -> None:
         """The rows of cases, the next ones (made where the cases were solved,
         :class:`contact.scene.output.CaseEncoder`, or here)."""
-        note, raw_rows, single_rows = self.table.note, [], []
-        for res in results:
-            text = case_text(res)
-            if text is not None:
-                note(res)
-                raw, single = text.row, text.single_zone_row
-            else:
-                raw, single = row_lines(self.table, res)
-            raw_rows.append(raw)
-            single_rows.append(single)
-        self._fh.write("".join(raw_rows))
+        texts = [case_text(res) for res in results]
+        if results and None not in texts:          # all made where they were solved
+            self.table.note(results[0])
+            self.table.note_zones(max(text.zones for text in texts))
+            rows = [(text.row, text.single_zone_row) for text in texts]
+        else:
+            rows = []
+            for res, text in zip(results, texts):
+                if text is None:
+                    rows.append(row_lines(self.table, res))     # its row notes it
+                else:
+                    self.table.note(res)
+                    rows.append((text.row, text.single_zone_row))
+        self._fh.write("".join(raw for raw, _ in rows))
         if self._single is not None:
+            single_rows = [single for _, single in rows]
             if None in single_rows:               # a case with several zones: laid out later
                 self._drop_single()
             else:
