@@ -165,6 +165,29 @@ def test_first_failure_in_scene_order_ends_the_results(pool):
     assert isinstance(got[5][1], contact.LoadError)
 
 
+@pytest.mark.parametrize("pool", ["serial", "processes"])
+def test_chunks_come_whole_and_the_failing_one_is_cut_after_its_failure(pool, monkeypatch):
+    """iter_chunks delivers lists of (index, result), in scene order and without gaps; the
+    chunk that holds the first failure ends with it; none comes after it."""
+    monkeypatch.setattr(batch, "_PROBE", 4)
+    monkeypatch.setattr(batch, "SERIAL_CHUNK", 3)
+    cases = fake_cases(40)
+    if pool == "serial":
+        chunks = list(batch.iter_chunks(double_or_fail, cases, None, lambda k: None))
+    else:
+        with ProcessPoolExecutor(2) as ex:
+            chunks = list(batch.iter_chunks(double_or_fail, cases, ex, lambda k: None))
+    assert all(isinstance(c, list) and c for c in chunks)
+    flat = [i for chunk in chunks for i, _ in chunk]
+    assert flat == list(range(6))
+    assert isinstance(chunks[-1][-1][1], contact.LoadError)
+    assert not any(isinstance(res, Exception) for chunk in chunks[:-1] for _, res in chunk)
+    if pool == "serial":                                 # _PROBE, then SERIAL_CHUNK a time
+        assert [len(c) for c in chunks] == [4, 2]
+    else:                                                # the probe in two halves
+        assert [len(c) for c in chunks[:2]] == [2, 2]
+
+
 def test_progress_counts_cases():
     counted = []
     cases = fake_cases(12)
