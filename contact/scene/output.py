@@ -32,7 +32,7 @@ from .figures import (MAX_CURVES, SUBSURFACE_PANELS, _write_curve_figures,
 from .run import (SUBSURFACE_QUANTITIES, CaseResult, CaseText, SceneResult, _json_case,
                   _json_head, _json_tail, case_text, progress_bar)
 from .spec import CURVE_FIELDS, Scene
-from .summary import TableSummary
+from .summary import TableRows, TableSummary
 from .table import SweepCsv, SweepTable, row_lines
 
 # --------------------------------------------------------------------------
@@ -128,14 +128,15 @@ class SceneWriter:
     def encoder(self) -> "CaseEncoder":
         """What makes this writer's text of a case where the case is solved (pass it to
         :func:`contact.scene.iter_scene` as ``encode``); a lean one when the writer keeps
-        nothing of a case but its text (no printed table, no curves, no maps)."""
-        return CaseEncoder(self.scene, lean=self._lean)
+        nothing of a case but its text and its row of the printed table (no curves, no
+        maps)."""
+        return CaseEncoder(self.scene, lean=self._lean, table=self.summary is not None)
 
     @property
     def _lean(self) -> bool:
-        """Whether it keeps nothing of a case but its text: it takes CaseText in place of
-        results."""
-        return self.summary is None and not self.curve_fields and self._maps is None
+        """Whether it keeps nothing of a case but its text and its row of the printed table
+        (no curves, no maps): it takes CaseText in place of results."""
+        return not self.curve_fields and self._maps is None
 
     def _open(self, part):
         self._files.append(part)
@@ -158,7 +159,10 @@ class SceneWriter:
         this writer's lean :meth:`encoder`."""
         self._json.add_all(results)
         self._sweep.add_all(results)
-        if self._lean:                          # nothing to keep (see encoder)
+        if self._lean:                          # texts (see encoder): their table rows
+            if self.summary is not None:
+                for text in results:
+                    self.summary.add(text)
             self._added += len(results)
             return
         for res in results:
@@ -319,16 +323,19 @@ class CaseEncoder:
     case, which bounded how many workers it could keep busy).  A picklable callable:
     ``encoder(res)`` returns ``res`` with ``res.encoded`` set, or, ``lean``, the
     :class:`~contact.scene.run.CaseText` alone (for a writer that keeps nothing else of a
-    case: :meth:`SceneWriter.encoder`).
+    case: :meth:`SceneWriter.encoder`).  ``table``: the text carries the case's row of the
+    printed table too (:class:`~contact.scene.summary.TableRows`).
     """
 
-    def __init__(self, scene: Scene, lean: bool = False):
+    def __init__(self, scene: Scene, lean: bool = False, table: bool = False):
         self.scene, self.lean = scene, lean
         self._table = SweepTable(scene, scene.case_count)
+        self._rows = TableRows(scene) if table else None
 
     def __call__(self, res: CaseResult):
+        table_row = tuple(self._rows(res).items()) if self._rows is not None else None
         text = CaseText(res.index, res.label, res.time_s, tuple(res.warnings), case_json(res),
-                        *row_lines(self._table, res), len(res.zones))
+                        *row_lines(self._table, res), len(res.zones), table_row)
         if self.lean:
             return text
         res.encoded = text

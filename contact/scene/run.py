@@ -95,6 +95,9 @@ class CaseText(NamedTuple):
     single_zone_row: str | None
     #: How many contact zones it has.
     zones: int
+    #: Its cells in the printed table, ((column, cell), ...), or None when not made
+    #: (:class:`contact.scene.summary.TableRows`).
+    table_row: tuple | None = None
 
 
 def case_text(res) -> CaseText | None:

@@ -10,7 +10,7 @@ import numpy as np
 
 import contact
 
-from .run import CaseResult, SceneResult, _inputs_text
+from .run import CaseResult, CaseText, SceneResult, _inputs_text
 from .spec import SUBSURFACE_CUT, Scene, _fmt
 
 #: The printed table shows every case of a sweep of at most this many; a longer one shows the
@@ -47,13 +47,8 @@ class TableSummary:
 
     def __init__(self, scene: Scene, count: int):
         self.scene, self.count = scene, count
-        swept = [key for _, key in scene.sweep]
-        if "velocity" in swept:
-            swept.append("speed")
-        self._swept = swept
-        self._outer = ("ends" in scene.fields or "zones" in scene.fields,
-                       "exponents" in scene.fields, "sif" in scene.fields)
-        self._columns = dict.fromkeys(["case"] + swept)
+        self.rows = TableRows(scene)
+        self._columns = dict.fromkeys(["case"] + self.rows.swept)
         self._head = []
         self._tail = collections.deque(maxlen=TABLE_ROWS // 2)
         self._lowest, self._highest = {}, {}          # column -> (value, cell)
@@ -62,16 +57,22 @@ class TableSummary:
         self._other_than_one_zone = self._several_zones = False
         self._free_end = self._cut = False
 
-    def add(self, res: CaseResult) -> None:
-        """The next case, in scene order."""
-        row = _table_row(res, self._swept, self._outer)
-        if self._first_inputs is None:
-            self._first_inputs = res.entry["inputs"]
+    def add(self, res) -> None:
+        """The next case, in scene order: a CaseResult, or a CaseText that carries its row
+        (:class:`contact.scene.output.CaseEncoder` with ``table=True``)."""
+        if type(res) is CaseText:
+            row, zones = dict(res.table_row), res.zones
+            if self._first_inputs is None:
+                self._first_inputs = self.scene.case(res.index).inputs
+        else:
+            row, zones = self.rows(res), len(res.zones)
+            if self._first_inputs is None:
+                self._first_inputs = res.entry["inputs"]
+            self._cut |= _cut_below_surface(res.entry)   # a text has no map: never cut
         self._columns.update(dict.fromkeys(row))
-        self._other_than_one_zone |= len(res.zones) != 1
-        self._several_zones |= len(res.zones) > 1
+        self._other_than_one_zone |= zones != 1
+        self._several_zones |= zones > 1
         self._free_end |= row.get("K_left") == "-" or row.get("K_right") == "-"
-        self._cut |= _cut_below_surface(res.entry)
         for key, cell in row.items():
             self._extremes(key, cell)
         if self._added < TABLE_ROWS // 2 or self.count <= TABLE_ROWS:
@@ -145,6 +146,24 @@ class TableSummary:
                      "in the scene (stresses in the stiffness unit, lengths in the punch's "
                      "unit)")
         return "\n".join(lines)
+
+
+class TableRows:
+    """A case's cells in the printed table (:func:`_table_row`), as :class:`TableSummary`
+    keeps them: a picklable callable, so that a worker can make them where the case is
+    solved (:class:`contact.scene.output.CaseEncoder`)."""
+
+    def __init__(self, scene: Scene):
+        swept = [key for _, key in scene.sweep]
+        if "velocity" in swept:
+            swept.append("speed")
+        #: The swept inputs, the table's first columns after ``case``.
+        self.swept = swept
+        self._outer = ("ends" in scene.fields or "zones" in scene.fields,
+                       "exponents" in scene.fields, "sif" in scene.fields)
+
+    def __call__(self, res: CaseResult) -> dict:
+        return _table_row(res, self.swept, self._outer)
 
 
 def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
