@@ -26,6 +26,7 @@ Targets (issue "sweeps that scale"):
 """
 from __future__ import annotations
 
+import importlib.util
 import math
 import os
 import shutil
@@ -198,9 +199,7 @@ def cli_rows(n_speed, n_friction):
                          f"{ratio:.2f}x --jobs 1",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
-        try:
-            import distributed  # noqa: F401
-        except ImportError:
+        if importlib.util.find_spec("distributed") is None:
             rows.append(("`contact run --scheduler`", float("nan"), "distributed not installed",
                          ""))
             return rows

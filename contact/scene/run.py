@@ -79,8 +79,8 @@ class CaseText(NamedTuple):
     as text, made where it was solved (:class:`contact.scene.output.CaseEncoder`).  A
     result's ``encoded``; what a lean encoder gives in its place, for a writer that keeps
     nothing else of a case: a tuple of strings and numbers crosses from a worker at a
-    fraction of a result's cost (measured: 1.2 and 0.6 us a case to pickle and unpickle,
-    against 3.5 and 2.5)."""
+    fraction of a result's cost (measured without the table row: 1.2 and 0.6 us a case to
+    pickle and unpickle, against 3.5 and 2.5)."""
     index: int
     label: str
     #: As :attr:`CaseResult.time_s`.
@@ -529,8 +529,9 @@ class SceneRun:
         return itertools.chain.from_iterable(self._results)
 
     def chunks(self):
-        """The results a chunk at a time (lists of :class:`CaseResult`, in scene order): the
-        same run as iterating it, for a consumer that takes cases in bulk
+        """The results a chunk at a time (lists of :class:`CaseResult`, or of
+        :class:`CaseText` with a lean encoder, in scene order): the same run as iterating
+        it, for a consumer that takes cases in bulk
         (:meth:`contact.scene.SceneWriter.add_all`)."""
         return self._results
 
