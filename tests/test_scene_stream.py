@@ -252,6 +252,23 @@ def test_long_sweep_prints_its_first_and_last_cases_and_extremes():
     assert lines[-1].startswith(f"  total time {result.timing_s:.3f} s for {n} case(s)")
 
 
+def test_long_sweep_table_from_the_workers_texts_is_the_same(tmp_path):
+    """The printed table of a long sweep made from the rows the workers send (lean texts,
+    a chunk at a time) equals format_table of the kept results: first and last cases, and
+    each column's extremes over every case."""
+    s = load_sweep(TABLE_ROWS + 60)
+    expected = untimed_table(format_table(run_scene(s)))
+    with SceneWriter(s, tmp_path / "out", s.case_count, figures=False) as writer, \
+            ProcessPoolExecutor(2) as ex:
+        assert writer.encoder().lean
+        run = iter_scene(s, executor=ex, encode=writer.encoder())
+        for results in run.chunks():
+            assert all(isinstance(res, CaseText) for res in results)
+            writer.add_all(results)
+        assert untimed_table(writer.table(1.0)) == expected
+    assert any(line.split()[:1] == ["min"] for line in expected)
+
+
 # --------------------------------------------------------------------------
 # order, window, failures
 # --------------------------------------------------------------------------

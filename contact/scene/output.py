@@ -160,8 +160,7 @@ class SceneWriter:
         self._sweep.add_all(results)
         if self._lean:                          # texts (see encoder): their table rows
             if self.summary is not None:
-                for text in results:
-                    self.summary.add(text)
+                self.summary.add_all(results)
             self._added += len(results)
             return
         for res in results:
@@ -332,7 +331,7 @@ class CaseEncoder:
         self._rows = TableRows(scene) if table else None
 
     def __call__(self, res: CaseResult):
-        table_row = tuple(self._rows(res).items()) if self._rows is not None else None
+        table_row = self._rows.columns(res) if self._rows is not None else None
         text = CaseText(res.index, res.label, res.time_s, tuple(res.warnings), case_json(res),
                         *row_lines(self._table, res), len(res.zones), table_row)
         if self.lean:

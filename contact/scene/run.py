@@ -95,8 +95,8 @@ class CaseText(NamedTuple):
     single_zone_row: str | None
     #: How many contact zones it has.
     zones: int
-    #: Its cells in the printed table, ((column, cell), ...), or None when not made
-    #: (:class:`contact.scene.summary.TableRows`).
+    #: Its row of the printed table, (columns, cells, values), or None when not made
+    #: (:meth:`contact.scene.summary.TableRows.columns`).
     table_row: tuple | None = None
 
 

@@ -28,8 +28,7 @@ def format_table(result: SceneResult) -> str:
     When a case has several contact zones, a ``zones`` column gives their number, and the ends,
     exponents and SIFs shown are those of the outer ends (result.json lists every zone)."""
     summary = TableSummary(result.scene, len(result.cases))
-    for res in result.cases:
-        summary.add(res)
+    summary.add_all(result.cases)
     return summary.text(result.timing_s)
 
 
@@ -58,44 +57,55 @@ class TableSummary:
         self._free_end = self._cut = False
 
     def add(self, res) -> None:
-        """The next case, in scene order: a CaseResult, or a CaseText that carries its row
-        (:class:`contact.scene.output.CaseEncoder` with ``table=True``)."""
-        if type(res) is CaseText:
-            row, zones = dict(res.table_row), res.zones
-            if self._first_inputs is None:
-                self._first_inputs = self.scene.case(res.index).inputs
-        else:
-            row, zones = self.rows(res), len(res.zones)
-            if self._first_inputs is None:
-                self._first_inputs = res.entry["inputs"]
-            self._cut |= _cut_below_surface(res.entry)   # a text has no map: never cut
-        self._columns.update(dict.fromkeys(row))
-        self._other_than_one_zone |= zones != 1
-        self._several_zones |= zones > 1
-        self._free_end |= row.get("K_left") == "-" or row.get("K_right") == "-"
-        for key, cell in row.items():
-            self._extremes(key, cell)
-        if self._added < TABLE_ROWS // 2 or self.count <= TABLE_ROWS:
-            self._head.append(row)
-        else:
-            self._tail.append(row)
-        self._added += 1
+        """The next case, in scene order (:meth:`add_all` of one)."""
+        self.add_all([res])
 
-    def _extremes(self, key: str, cell: str) -> None:
-        """Keep ``cell`` as its column's smallest or largest when it is (cells that are not
-        a finite number are passed over)."""
-        if key == "case":
+    def add_all(self, results) -> None:
+        """The next cases, in scene order: CaseResult, or CaseText carrying its row
+        (:class:`contact.scene.output.CaseEncoder` with ``table=True``).  Their rows are
+        taken a column at a time: each column's extremes are the min and max over it (a
+        cell at a time, this took ~7 us a case in the process that writes a sweep)."""
+        by_columns = {}                     # a row's columns -> its cases' (cells, values)
+        zones = []
+        for res in results:
+            if type(res) is CaseText:
+                keys, cells, values = res.table_row
+                zones.append(res.zones)
+                if self._first_inputs is None:
+                    self._first_inputs = self.scene.case(res.index).inputs
+            else:
+                keys, cells, values = self.rows.columns(res)
+                zones.append(len(res.zones))
+                if self._first_inputs is None:
+                    self._first_inputs = res.entry["inputs"]
+                self._cut |= _cut_below_surface(res.entry)   # a text has no map: never cut
+            by_columns.setdefault(keys, []).append((cells, values))
+            if self._added < TABLE_ROWS // 2 or self.count <= TABLE_ROWS:
+                self._head.append(dict(zip(keys, cells)))
+            else:
+                self._tail.append((keys, cells))
+            self._added += 1
+        if not zones:
             return
-        try:
-            value = float(cell)
-        except ValueError:
-            return
-        if not math.isfinite(value):
-            return
-        if key not in self._lowest or value < self._lowest[key][0]:
-            self._lowest[key] = (value, cell)
-        if key not in self._highest or value > self._highest[key][0]:
-            self._highest[key] = (value, cell)
+        self._other_than_one_zone |= min(zones) != 1 or max(zones) != 1
+        self._several_zones |= max(zones) > 1
+        for keys, rows in by_columns.items():
+            self._columns.update(dict.fromkeys(keys))
+            cell_columns = zip(*(cells for cells, _ in rows))
+            value_columns = zip(*(values for _, values in rows))
+            for key, cells, values in zip(keys, cell_columns, value_columns):
+                if key in ("K_left", "K_right") and "-" in cells:
+                    self._free_end = True
+                numbers = [(v, c) for v, c in zip(values, cells) if v is not None]
+                if numbers:
+                    self._extremes(key, min(numbers), max(numbers))
+
+    def _extremes(self, key: str, lowest: tuple, highest: tuple) -> None:
+        """Keep a column's smallest and largest (value, cell) over the cases so far."""
+        if key not in self._lowest or lowest[0] < self._lowest[key][0]:
+            self._lowest[key] = lowest
+        if key not in self._highest or highest[0] > self._highest[key][0]:
+            self._highest[key] = highest
 
     def text(self, timing_s: float) -> str:
         """The table of the cases added, with its notes and the run's time."""
@@ -116,7 +126,8 @@ class TableSummary:
         if omitted:
             extremes = [{"case": "min", **{k: c for k, (_, c) in self._lowest.items()}},
                         {"case": "max", **{k: c for k, (_, c) in self._highest.items()}}]
-        shown = self._head + list(self._tail) + extremes
+        tail = [dict(zip(keys, cells)) for keys, cells in self._tail]
+        shown = self._head + tail + extremes
         widths = {k: max(len(k), *(len(r.get(k, "")) for r in shown)) for k in columns}
 
         def line(row):
@@ -126,7 +137,7 @@ class TableSummary:
         lines += [line(r) for r in self._head]
         if omitted:
             lines.append(line({"case": "..."}).rstrip())
-            lines += [line(r) for r in list(self._tail) + extremes]
+            lines += [line(r) for r in tail + extremes]
             lines.append(f"  ({omitted} of {self._added} cases not shown; min, max: each "
                          "column's smallest and largest value over every case; sweep.csv has "
                          "every case)")
@@ -149,8 +160,8 @@ class TableSummary:
 
 
 class TableRows:
-    """A case's cells in the printed table (:func:`_table_row`), as :class:`TableSummary`
-    keeps them: a picklable callable, so that a worker can make them where the case is
+    """A case's row of the printed table (:func:`_table_row`) as :class:`TableSummary`
+    takes it (:meth:`columns`): picklable, so that a worker can make it where the case is
     solved (:class:`contact.scene.output.CaseEncoder`)."""
 
     def __init__(self, scene: Scene):
@@ -162,8 +173,23 @@ class TableRows:
         self._outer = ("ends" in scene.fields or "zones" in scene.fields,
                        "exponents" in scene.fields, "sif" in scene.fields)
 
-    def __call__(self, res: CaseResult) -> dict:
-        return _table_row(res, self.swept, self._outer)
+    def columns(self, res: CaseResult) -> tuple:
+        """(columns, cells, values) of a case's row: the cells as printed, and the number
+        each reads as where it is a finite one (None elsewhere, and in ``case``): what the
+        column's extremes are taken from."""
+        row = _table_row(res, self.swept, self._outer)
+        return tuple(row), tuple(row.values()), tuple(_cell_value(k, c) for k, c in row.items())
+
+
+def _cell_value(key: str, cell: str) -> float | None:
+    """The number a printed cell reads as, if a finite one (not the case's index)."""
+    if key == "case":
+        return None
+    try:
+        value = float(cell)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
 
 
 def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
