@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import gc
 import os
 import sys
 from concurrent.futures import ProcessPoolExecutor
@@ -128,6 +129,21 @@ def main(argv=None) -> int:
     except KeyboardInterrupt:
         _error("interrupted")
         return 130
+
+
+def console():
+    """The ``contact`` console script and ``python -m contact``: :func:`main` on the command
+    line, then the process exits with its status.
+
+    Before the interpreter tears itself down, the objects still alive are moved out of the
+    cyclic collector's reach (:func:`gc.freeze`): its passes at exit over every object of
+    numpy, numba and scipy cost ~0.1 s of each run, on one core (measured on `contact run`
+    of 1e5 cases: 0.14 s from the end of main() to the end of the process, 0.03 s frozen).
+    Files are closed by main() itself; reference counting still frees what is torn down.
+    """
+    status = main()
+    gc.freeze()
+    sys.exit(status)
 
 
 def _error(message: str):

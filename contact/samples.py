@@ -62,7 +62,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import make_interp_spline
 
 from .errors import ContactInputError, PunchGeometryError
 
@@ -227,6 +226,9 @@ def face_from_samples(X, h, *, kind="quintic", breaks="auto", outside="raise") -
         raise SampleError(f"X must be strictly increasing (sorted, no repeated X), got "
                           f"X[{i}] = {Xa[i]!r} and X[{i + 1}] = {Xa[i + 1]!r}: {what}")
     deg = min(_DEGREE[kind], N - 1)
+    # imported here: scipy.interpolate adds ~20 ms to the start of every `contact run`,
+    # and only a face given by samples needs it
+    from scipy.interpolate import make_interp_spline
     H = make_interp_spline(Xa, ha, k=deg)          # not-a-knot for odd k; N = k + 1: polynomial
     dH = H.derivative()
     knots = tuple(float(t) for t in H.t[deg + 1:H.t.size - deg - 1])
