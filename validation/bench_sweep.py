@@ -54,13 +54,14 @@ def sweep_toml(n_speed, n_friction, fields=("ends", "exponents", "sif")):
 #: Dask settings for sweeps of sub-millisecond cases (README, "Sweeps on several cores or a
 #: cluster"): no statistical profiler sampling the task thread every 10 ms; glibc's malloc
 #: left to tune its own thresholds (Dask's nannies set MALLOC_TRIM_THRESHOLD_, which also
-#: fixes the mmap threshold: every array over 128 kB is mapped and unmapped; None unsets
-#: it, Dask's one-thread limits for BLAS stay); each process's
-#: event loop checked every second, not every 20 ms, the workers' memory every second, not
-#: every 100 ms, the system's every 5 s (each wake-up takes the GIL from the task thread and
-#: a core from the workers).  Measured on 2 cores over a 1e5-case `contact run`: the workers'
-#: task threads spend 5-7 % more CPU than a process pool's workers with these settings, 14 %
-#: with Dask's defaults; the nannies and the scheduler 0.4 s, not 0.6 s.
+#: fixes the mmap threshold: every array over 128 kB is mapped and unmapped; None unsets it
+#: alone, Dask's one-thread limits for BLAS stay); each process's event loop checked every
+#: second, not every 20 ms, the workers' memory every second, not every 100 ms, the system
+#: every 5 s, not every 0.5 s (each wake-up takes the GIL from the task thread or a core from
+#: the workers).  Measured on 2 cores over a 1e5-case `contact run`: the workers' task
+#: threads spend 5-7 % more CPU than a process pool's workers with these settings, 14 % with
+#: Dask's defaults; the nannies and the scheduler 0.6 s together, 0.9 s with the first two
+#: settings alone.
 DASK_SWEEP_CONFIG = {"distributed.worker.profile.enabled": False,
                      "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
                      "distributed.admin.tick.interval": "1s",
