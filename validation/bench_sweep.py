@@ -10,10 +10,12 @@ parallel work).  Wall times (the pools and the cluster are wall-time objects), t
 of ``REPEATS`` runs of each configuration after a warm-up run; each row gives its ratio to
 the serial run of the same build, which varies less between machines than the time itself.
 
-Then ``contact run --quiet`` on the 1e5-case sweep end to end (start-up, solving, writing
-result.json and sweep.csv): ``--jobs N`` for N up to the machine's cores against
-``--jobs 1`` (the issue's measure), and ``--scheduler`` to a Dask LocalCluster of N worker
-processes against ``--jobs N``.
+Then ``contact run --quiet`` end to end (start-up, solving, writing result.json and
+sweep.csv) on 1e5 cases, 5e4 a core on a machine of more cores (:func:`cli_side`):
+``--jobs N`` for N up to the machine's cores against ``--jobs 1`` (the issue's measure), and
+``--scheduler`` to a Dask LocalCluster of N worker processes against ``--jobs N``, with the
+CPU time each run spent.  ``python -m validation.bench_sweep --cli`` runs these rows alone
+(bench_sweep_cli.md): the table of a machine with many cores.
 
 Targets (issue "sweeps that scale"):
 
@@ -29,6 +31,7 @@ from __future__ import annotations
 import importlib.util
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -178,53 +181,91 @@ def _contact_run(path, out, *args) -> list:
             *args]
 
 
-def cli_rows(n_speed, n_friction):
+#: Cases of ``contact run``'s timed sweep per core of the machine, 1e5 at least: its start-up
+#: (imports, numba loading its cached kernels: ~0.6 s) runs on one core, and N workers can
+#: reach 0.8 N only where the parallel work is at least 4 N - 5 times the start-up (Amdahl).
+CLI_CASES_PER_CORE = 50_000
+
+
+def cli_side(cores: int) -> int:
+    """The side of the square speed x friction sweep that ``contact run`` is timed on: 316
+    (1e5 cases) up to 2 cores, ``CLI_CASES_PER_CORE`` cases per core beyond."""
+    return math.isqrt(max(100_000, CLI_CASES_PER_CORE * cores))
+
+
+def cli_rows(n_speed, n_friction, repeats=2):
     """``contact run --quiet --jobs N`` end to end (a fresh process: start-up, solving and
-    writing result.json and sweep.csv), the best of 2 runs, for N up to the machine's cores,
-    against ``--jobs 1``: what a user of the command sees, and the issue's measure
-    (>= 0.8 N, >= 1.7x on 2 cores).  Then ``--scheduler`` to a Dask LocalCluster of N
-    worker processes (started here, warmed by a first run), against ``--jobs N`` (N >= 2:
-    ``--jobs 1`` is no pool)."""
+    writing result.json and sweep.csv), the best of ``repeats`` runs, for N up to the
+    machine's cores, against ``--jobs 1``: what a user of the command sees, and the issue's
+    measure (>= 0.8 N, >= 1.7x on 2 cores).  Then ``--scheduler`` to a Dask LocalCluster of
+    2 and of all cores' worker processes (started here, warmed on a small sweep), against
+    ``--jobs N``.  Each row gives the CPU time of the run's processes together and how much
+    of N cores it kept busy."""
     cores = os.cpu_count() or 1
     rows, walls = [], {}
     with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "sweep.toml"
+        path, small = Path(tmp) / "sweep.toml", Path(tmp) / "small.toml"
         path.write_text(sweep_toml(n_speed, n_friction))
+        small.write_text(sweep_toml(20, 20))
         out = Path(tmp) / "out"
 
-        def timed(args):
-            def run():
-                shutil.rmtree(out, ignore_errors=True)
-                return subprocess.run(_contact_run(path, out, *args), capture_output=True,
-                                      text=True).returncode
-            return _timed(run, 2)
+        def run(args, scene=path, cluster=None):
+            shutil.rmtree(out, ignore_errors=True)
+            before = _children_cpu_s() + _cluster_cpu_s(cluster)
+            t0 = time.perf_counter()
+            rc = subprocess.run(_contact_run(scene, out, *args), capture_output=True,
+                                text=True).returncode
+            wall = time.perf_counter() - t0
+            return wall, rc, _children_cpu_s() + _cluster_cpu_s(cluster) - before
+
+        def best(args, n, cluster=None):
+            wall, rc, cpu = min(run(args, cluster=cluster) for _ in range(repeats))
+            return wall, rc, f"CPU {cpu:.1f} s ({cpu / (n * wall):.0%} of {n} core(s))"
+
+        def failed(rc):
+            return "" if rc == 0 else f" (FAILED: exit status {rc})"
         for jobs in sorted({1, 2, 4, 8, 16, cores} & set(range(1, cores + 1))):
-            t, rc = timed(("--jobs", str(jobs)))
+            t, rc, busy = best(("--jobs", str(jobs)), jobs)
             walls[jobs] = t
             need = 1.7 if jobs == 2 else 0.8 * jobs
             ratio = walls[1] / t
-            rows.append((f"`contact run --quiet --jobs {jobs}`"
-                         f"{'' if rc == 0 else f' (FAILED: exit status {rc})'}", t,
-                         f"{ratio:.2f}x --jobs 1",
+            rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
+                         f"{ratio:.2f}x --jobs 1; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
         if importlib.util.find_spec("distributed") is None:
             rows.append(("`contact run --scheduler`", float("nan"), "distributed not installed",
                          ""))
             return rows
-        for n in sorted({1, 2, cores}):
+        # a cluster of one worker has no pool to be held to (--jobs 1 solves in the process
+        # itself); the API rows (scaling_rows) measure it against a pool of one
+        for n in sorted({2, cores} & set(range(2, cores + 1))):
             with local_cluster(n) as cl:
-                timed(("--scheduler", cl.scheduler_address))           # warm the workers
-                t, rc = timed(("--scheduler", cl.scheduler_address))
-            # --jobs 1 solves in the process itself: a pool starts at 2 workers, and the
-            # target (within 15 % of a pool of as many workers) with it
-            ref = walls.get(n)
+                address = ("--scheduler", cl.scheduler_address)
+                run(address, small)                     # the workers import and load kernels
+                t, rc, busy = best(address, n, cl)
             rows.append((f"`contact run --quiet --scheduler` (LocalCluster, {n} worker "
-                         f"processes){'' if rc == 0 else f' (FAILED: exit status {rc})'}", t,
-                         f"{t / ref:.2f}x --jobs {n}" if ref else "",
-                         "<= 1.15x" + (" PASS" if t / ref <= 1.15 else " FAIL")
-                         if ref and n > 1 else ""))
+                         f"processes){failed(rc)}", t, f"{t / walls[n]:.2f}x --jobs {n}; {busy}",
+                         "<= 1.15x" + (" PASS" if t / walls[n] <= 1.15 else " FAIL")))
     return rows
+
+
+def _children_cpu_s() -> float:
+    """CPU seconds of this process's finished children (``contact run`` and its pool's
+    workers, which it waited for)."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def _cluster_cpu_s(cluster) -> float:
+    """CPU seconds so far of a LocalCluster's worker processes and of this process, which
+    runs its scheduler and nannies (0 without a cluster)."""
+    if cluster is None:
+        return 0.0
+    import psutil                       # a dependency of distributed
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime + sum(
+        sum(psutil.Process(w.process.pid).cpu_times()[:2]) for w in cluster.workers.values())
 
 
 #: Runs a command and prints the peak resident size, in kB, of the largest process it
@@ -272,28 +313,36 @@ def memory_rows(jobs=0):
 
 
 def main(argv=None):
+    """``--quick``: every configuration on small sweeps (the timings mean little);
+    ``--cli``: the ``contact run`` rows alone (:func:`cli_rows`, on :func:`cli_side` of the
+    machine's cores), written to bench_sweep_cli.md: the table of a machine with many cores."""
     from contact.scene import parse_scene_text
+    argv = sys.argv[1:] if argv is None else argv
     OUT.mkdir(parents=True, exist_ok=True)
-    quick = argv is not None and "--quick" in argv
-    scene = parse_scene_text(sweep_toml(20 if quick else 100, 20 if quick else 100),
-                             source="<bench sweep>")
-    rows = in_process_rows(scene)
-    # the pools and clusters on a sweep 10 times longer: the 1e4-case sweep takes ~0.6 s in
-    # process, where their fixed costs (starting the chunks, the first chunk solved here)
-    # would weigh as much as the parallel work
-    rows += scaling_rows(parse_scene_text(sweep_toml(20 if quick else 316,
-                                                     20 if quick else 316),
-                                          source="<bench sweep 1e5>"))
-    rows += cli_rows(20 if quick else 316, 20 if quick else 316)
-    if not quick:
+    quick, cli_only = "--quick" in argv, "--cli" in argv
+    cores = os.cpu_count() or 1
+    rows = []
+    if not cli_only:
+        scene = parse_scene_text(sweep_toml(20 if quick else 100, 20 if quick else 100),
+                                 source="<bench sweep>")
+        rows += in_process_rows(scene)
+        # the pools and clusters on a sweep 10 times longer: the 1e4-case sweep takes ~0.4 s
+        # in process, where their fixed costs (starting the chunks, the first chunk solved
+        # here) would weigh as much as the parallel work
+        rows += scaling_rows(parse_scene_text(sweep_toml(20 if quick else 316,
+                                                         20 if quick else 316),
+                                              source="<bench sweep 1e5>"))
+    side = 20 if quick else cli_side(cores)
+    rows += cli_rows(side, side)
+    if not (quick or cli_only):
         rows += memory_rows()
     lines = ["# sweep benchmarks", "",
              "Sweeps of a cylindrical punch (speed x friction; ends, exponents, SIFs) on "
-             f"{os.cpu_count()} cores; wall times.", "",
+             f"{cores} cores; wall times; `contact run` on {side * side} cases.", "",
              "| run | wall [s] | ratio | target |", "|---|---|---|---|"]
     lines += [f"| {r} | {t:.2f} | {ratio} | {target} |" for r, t, ratio, target in rows]
     text = "\n".join(lines) + "\n"
-    (OUT / "bench_sweep.md").write_text(text)
+    (OUT / ("bench_sweep_cli.md" if cli_only else "bench_sweep.md")).write_text(text)
     print(text)
 
 
