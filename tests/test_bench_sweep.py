@@ -1,9 +1,9 @@
 """validation/bench_sweep.py on a small sweep: every configuration it times runs, the process
 pools and Dask clusters give the serial run's results, and ``contact run`` exits with status
-0 with ``--jobs`` and ``--scheduler`` alike.  Its timings and targets are for ``make bench`` and are not judged here; what
-is checked is that the benchmark works and that its Dask settings reach the workers as the
-README says (no statistical profiler, MALLOC_TRIM_THRESHOLD_ unset, Dask's one-thread BLAS
-limits kept)."""
+0 with ``--jobs`` and ``--scheduler`` alike.  Its timings and targets are for ``make bench``
+and are not judged here; what is checked is that the benchmark works and that its Dask
+settings reach the workers as the README says (no statistical profiler, MALLOC_TRIM_THRESHOLD_
+unset, Dask's one-thread BLAS limits kept)."""
 import os
 
 import pytest
