@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import gc
+import multiprocessing
 import os
 import sys
 from concurrent.futures import ProcessPoolExecutor
@@ -208,8 +209,20 @@ def _executor(jobs: int, scheduler: str | None):
     if jobs == 1:
         yield None
         return
-    with ProcessPoolExecutor(max_workers=jobs) as ex:
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context()) as ex:
         yield ex
+
+
+def _pool_context():
+    """The multiprocessing context of ``--jobs N``'s pool: "fork" on Linux, so that the
+    workers start from this process as it is after its first cases (the libraries imported,
+    numba's kernels loaded: ~0.6 s that each worker would spend again, and Python 3.14's
+    default there, "forkserver", would have them spend); elsewhere the platform's default
+    ("spawn" on macOS and Windows, where forking a process that has loaded system
+    frameworks is unsafe)."""
+    if sys.platform.startswith("linux"):
+        return multiprocessing.get_context("fork")
+    return multiprocessing.get_context()
 
 
 @contextlib.contextmanager

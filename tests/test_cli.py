@@ -135,6 +135,16 @@ def test_sweep_on_a_dask_cluster_equals_serial(serial_sweep, tmp_path):
     assert cases_of(tmp_path / "dask" / "result.json") == serial_sweep
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the pool forks on Linux")
+def test_jobs_pool_forks_from_the_warm_process_on_linux():
+    """--jobs N's workers are forked from the process that has imported the libraries and
+    loaded the kernels (whatever the interpreter's default: "forkserver" from Python 3.14
+    would have each worker import and load them again)."""
+    with cli._executor(2, None) as ex:
+        assert ex._mp_context.get_start_method() == "fork"
+        assert ex.submit(os.getppid).result() == os.getpid()
+
+
 def test_run_scene_through_an_executor_equals_serial():
     from concurrent.futures import ThreadPoolExecutor
     s = load_scene(SCENES / "fig2a_triangular_speed.toml")
