@@ -214,12 +214,12 @@ def _executor(jobs: int, scheduler: str | None):
 
 
 def _pool_context():
-    """The multiprocessing context of ``--jobs N``'s pool: "fork" on Linux, so that the
-    workers start from this process as it is after its first cases (the libraries imported,
-    numba's kernels loaded: ~0.6 s that each worker would spend again, and Python 3.14's
-    default there, "forkserver", would have them spend); elsewhere the platform's default
-    ("spawn" on macOS and Windows, where forking a process that has loaded system
-    frameworks is unsafe)."""
+    """The multiprocessing context of ``--jobs N``'s pool: "fork" on Linux, whatever the
+    interpreter's default (from Python 3.14 it is "forkserver" there), so that the workers
+    start as copies of this process after its first cases, the libraries imported and
+    numba's kernels loaded, instead of spending ~0.6 s each on them again; elsewhere the
+    platform's default ("spawn" on macOS and Windows, where forking a process that has
+    loaded system frameworks is unsafe)."""
     if sys.platform.startswith("linux"):
         return multiprocessing.get_context("fork")
     return multiprocessing.get_context()
