@@ -29,7 +29,7 @@ def test_sweep_config_reaches_the_workers():
 
 def test_every_configuration_runs_and_agrees_with_serial():
     scene = parse_scene_text(bench_sweep.sweep_toml(10, 12), source="<bench smoke>")
-    rows = bench_sweep.scaling_rows(scene) + bench_sweep.cli_rows(10, 12)
+    rows = bench_sweep.scaling_rows(scene) + bench_sweep.cli_rows(10, 12, repeats=1)
     names = [name for name, *_ in rows]
     assert not [n for n in names if "RESULTS DIFFER" in n or "FAILED" in n], names
     assert sum("process pool" in n for n in names) >= 2

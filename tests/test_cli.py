@@ -135,6 +135,28 @@ def test_sweep_on_a_dask_cluster_equals_serial(serial_sweep, tmp_path):
     assert cases_of(tmp_path / "dask" / "result.json") == serial_sweep
 
 
+def test_lean_sweep_on_a_dask_cluster_writes_the_serial_files(tmp_path):
+    """A sweep of scalar fields through a cluster: the workers' texts come back a column at
+    a time (contact.scene.batch.ChunkResults) and nothing is solved in this process first;
+    result.json's cases, sweep.csv and the printed table are those of the serial run."""
+    distributed = pytest.importorskip("distributed", reason="optional extra sie-contact[dask]")
+    scene = tmp_path / "lean.toml"
+    scene.write_text('[material]\npreset = "zhou2014"\n[punch]\nkind = "cylindrical"\n'
+                     'radius = 100.0\n[motion]\nload = 0.01\n'
+                     f"speed = {[round(0.05 * k, 2) for k in range(12)]}\n"
+                     f"friction = {[round(0.04 * k, 2) for k in range(10)]}\n"
+                     '[outputs]\nfields = ["ends", "exponents", "sif"]\n')
+    assert cli.main(["run", str(scene), "--out", str(tmp_path / "serial")]) == 0
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        assert cli.main(["run", str(scene), "--out", str(tmp_path / "dask"),
+                         "--scheduler", cluster.scheduler_address]) == 0
+    assert cases_of(tmp_path / "dask" / "result.json") == \
+        cases_of(tmp_path / "serial" / "result.json")
+    assert (tmp_path / "dask" / "sweep.csv").read_bytes() == \
+        (tmp_path / "serial" / "sweep.csv").read_bytes()
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the pool forks on Linux")
 def test_jobs_pool_forks_from_the_warm_process_on_linux():
     """--jobs N's workers are forked from the process that has imported the libraries and

@@ -227,6 +227,82 @@ def test_worker_count():
     assert batch.worker_count(object()) == 1
 
 
+Text = namedtuple("Text", "index json row")
+
+
+@pytest.mark.parametrize("items", [
+    [(7, Text(7, '{"a": 1}', "7,1\r\n")), (8, Text(8, "{}", "8,\r\n"))],
+    [(3, Text(3, "x", "y")), (4, contact.LoadError("case 4 fails"))],      # not all texts
+    [(0, 0), (1, 2)],                                                     # not named tuples
+    []])
+def test_chunk_results_cross_a_column_at_a_time_and_come_back_equal(items):
+    """A chunk of one named tuple type is pickled as its columns (one reduce for the chunk,
+    none per case) and made again as the same tuples of the same type; any other chunk is
+    pickled as it is."""
+    import pickle
+    chunk = batch.ChunkResults(items, 0.25)
+    reduced = chunk.__reduce__()
+    by_columns = bool(items) and all(type(r) is Text for _, r in items)
+    assert (reduced[0] is batch._from_columns) == by_columns
+    back = pickle.loads(pickle.dumps(chunk))
+    assert back.seconds == 0.25 and [i for i, _ in back.items] == [i for i, _ in items]
+    for (_, a), (_, b) in zip(items, back.items):
+        assert type(a) is type(b) and (a == b if not isinstance(a, Exception) else
+                                       str(a) == str(b))
+
+
+def test_which_executors_are_warmed_up_by_this_process():
+    """The probe (cases solved here first) warms workers that are this process's threads or
+    forks; a pool of spawned processes or a Dask cluster's workers warm up on their own."""
+    import multiprocessing
+    assert batch._warms_workers(ThreadPoolExecutor(1))
+    assert batch._warms_workers(_InlineExecutor())                   # unknown: as before
+    fork = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
+    spawn = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn"))
+    assert batch._warms_workers(fork) and not batch._warms_workers(spawn)
+    fork.shutdown(), spawn.shutdown()
+
+
+class _OwnProcesses(ThreadPoolExecutor):
+    """Threads that pass for a pool of spawned processes (batch._warms_workers is False);
+    records each submission's range and how many chunks had come back before it."""
+    import multiprocessing
+    _mp_context = multiprocessing.get_context("spawn")
+
+    def __init__(self, workers):
+        super().__init__(workers)
+        self.submitted, self.finished = [], 0
+
+    def submit(self, fn, *args):
+        self.submitted.append((args[2], args[3], self.finished))
+        fut = super().submit(fn, *args)
+        fut.add_done_callback(lambda f: setattr(self, "finished", self.finished + 1))
+        return fut
+
+
+def test_workers_of_their_own_get_a_first_chunk_each_then_sized_ones(monkeypatch):
+    """Nothing is solved here when the workers do not inherit this process: each worker
+    gets a first chunk of _PROBE // 2 cases, no more goes out until one of them is back,
+    and the chunks after it are sized from its time; every case delivered in order."""
+    import threading
+    monkeypatch.setattr(batch, "_PROBE", 6)
+    here = threading.get_ident()
+    solved_here = []
+
+    def solve(cases):
+        solved_here.extend(c.index for c in cases if threading.get_ident() == here)
+        time.sleep(1e-3 * len(cases))
+        return [c.index for c in cases]
+    with _OwnProcesses(2) as ex:
+        got = list(batch.iter_chunked(solve, fake_cases(400, speeds=(0.0,)), ex,
+                                      lambda k: None))
+    assert got == [(i, i) for i in range(400)] and not solved_here
+    assert [s[:2] for s in ex.submitted[:2]] == [(0, 3), (3, 6)]
+    assert ex.submitted[2][2] >= 1                  # the third after a first chunk came back
+    sizes = [stop - start for start, stop, _ in ex.submitted]
+    assert max(sizes) > 3
+
+
 def _sweep():
     return load_scene(contact.scene.__file__.replace("__init__.py", "") +
                       "../../validation/scenes/fig4a_cylindrical_speed.toml")
@@ -250,7 +326,7 @@ def test_dask_local_cluster_equals_serial():
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         ex = client.get_executor(pure=False)
-        assert batch.worker_count(ex) == 2
+        assert batch.worker_count(ex) == 2 and not batch._warms_workers(ex)
         got = run_scene(s, executor=ex)
     for a, b in zip(serial.cases, got.cases):
         assert repr(a.entry) == repr(b.entry)
