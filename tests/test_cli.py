@@ -135,7 +135,7 @@ def test_sweep_on_a_dask_cluster_equals_serial(serial_sweep, tmp_path):
     assert cases_of(tmp_path / "dask" / "result.json") == serial_sweep
 
 
-def test_lean_sweep_on_a_dask_cluster_writes_the_serial_files(tmp_path):
+def test_lean_sweep_on_a_dask_cluster_writes_the_serial_files(tmp_path, capsys):
     """A sweep of scalar fields through a cluster: the workers' texts come back a column at
     a time (contact.scene.batch.ChunkResults) and nothing is solved in this process first;
     result.json's cases, sweep.csv and the printed table are those of the serial run."""
@@ -146,11 +146,16 @@ def test_lean_sweep_on_a_dask_cluster_writes_the_serial_files(tmp_path):
                      f"speed = {[round(0.05 * k, 2) for k in range(12)]}\n"
                      f"friction = {[round(0.04 * k, 2) for k in range(10)]}\n"
                      '[outputs]\nfields = ["ends", "exponents", "sif"]\n')
+    def untimed_table(printed):             # each row's last cell is its time; paths differ
+        return [line.rsplit(None, 1)[0] for line in printed.splitlines()
+                if line.strip() and not line.startswith(("  total time", "  wrote"))]
     assert cli.main(["run", str(scene), "--out", str(tmp_path / "serial")]) == 0
+    serial_table = untimed_table(capsys.readouterr().out)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster:
         assert cli.main(["run", str(scene), "--out", str(tmp_path / "dask"),
                          "--scheduler", cluster.scheduler_address]) == 0
+    assert untimed_table(capsys.readouterr().out) == serial_table and len(serial_table) > 10
     assert cases_of(tmp_path / "dask" / "result.json") == \
         cases_of(tmp_path / "serial" / "result.json")
     assert (tmp_path / "dask" / "sweep.csv").read_bytes() == \
