@@ -115,8 +115,8 @@ class ChunkResults:
         lean writer's :class:`~contact.scene.run.CaseText`): lists of strings and numbers,
         which pickle and unpickle in C, in place of a Python call per case each way
         (measured on 3000 texts of a cylinder sweep: 0.95 and 1.1 us a case against 1.45
-        and 2.0; on a Dask cluster of 2 workers this halves the CPU that the workers' and
-        the client's event loops spend on 1e5 results, ~0.3 s)."""
+        and 2.0; 1e5 texts from a LocalCluster of 2 workers: the client's and the
+        scheduler's process 0.43 -> 0.22 s of CPU, each worker's event loop 0.19 -> 0.12 s)."""
         kind = type(self.items[0][1]) if self.items else None
         if getattr(kind, "_fields", None) and issubclass(kind, tuple) \
                 and not hasattr(self.items[0][1], "__dict__") \
