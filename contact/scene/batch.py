@@ -89,13 +89,19 @@ def worker_count(executor) -> int:
     n = getattr(executor, "_max_workers", None)
     if n:
         return int(n)
-    client = getattr(executor, "_client", None)
+    client = _dask_client(executor)
     if client is not None:
         try:
             return max(1, sum(client.nthreads().values()))
         except Exception:                     # a scheduler without workers yet
             return 1
     return 1
+
+
+def _dask_client(executor):
+    """The Dask client behind ``Client.get_executor()`` (distributed's ClientExecutor keeps
+    it as ``_client``), or None for any other executor."""
+    return getattr(executor, "_client", None)
 
 
 class ChunkResults:
@@ -202,13 +208,19 @@ def iter_chunks(fn, source, executor, on_done):
     yield from _windowed(fn, source, executor, probe, total, per_case, workers, on_done)
 
 
+def _ahead(per_case: float) -> int:
+    """Chunks per worker handed out past the first case not yet delivered: CHUNKS_AHEAD
+    once a case's time is known, one (each worker's first chunk) before."""
+    return CHUNKS_AHEAD if math.isfinite(per_case) else 1
+
+
 def _warms_workers(executor) -> bool:
     """Whether warming this process up warms the executor's workers too: they are its
     threads or its forks (a pool of the "fork" start method, made after the warm-up), or
     unknown.  Not a Dask cluster's workers nor a pool of "spawn" or "forkserver"
     processes: each of those warms up on its own first chunk, and solving here first would
     only keep them waiting (~0.1 s of numba loading its kernels, in series)."""
-    if getattr(executor, "_client", None) is not None:       # distributed's ClientExecutor
+    if _dask_client(executor) is not None:
         return False
     context = getattr(executor, "_mp_context", None)         # a ProcessPoolExecutor's
     return context is None or context.get_start_method() == "fork"
@@ -248,11 +260,10 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
     nothing was solved here: a first chunk of ``_PROBE // 2`` cases for each worker (which
     warms it up), and no more until one of them comes back."""
     left = max(total - start, 1)
-    sized = per_case is not None
-    if sized:
-        size = chunk_size(left, workers, per_case)
-    else:
+    if per_case is None:                # infinite until a chunk comes back
         per_case, size = math.inf, max(1, _PROBE // 2)
+    else:
+        size = chunk_size(left, workers, per_case)
     done = {}                           # first index of a finished chunk -> its results
     running = {}                        # future -> first index of its chunk
     next_start = start                  # first index not yet handed out
@@ -261,7 +272,7 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
     try:
         while delivered < total:
             while next_start < min(total, failed) and \
-                    next_start - delivered < (CHUNKS_AHEAD if sized else 1) * workers * size:
+                    next_start - delivered < _ahead(per_case) * workers * size:
                 stop = next_start + tail_size(size, total - next_start, workers)
                 running[executor.submit(run_range, fn, source, next_start, stop)] = next_start
                 next_start = stop
@@ -284,7 +295,7 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
                 done[first] = items
                 if items and chunk.seconds < per_case * len(items):
                     per_case = chunk.seconds / len(items)
-                    size, sized = chunk_size(left, workers, per_case), True
+                    size = chunk_size(left, workers, per_case)
                 failed = min([failed] + [i for i, r in items if isinstance(r, Exception)])
             for fut, first in list(running.items()):
                 if first > failed and fut.cancel():
