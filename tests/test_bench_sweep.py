@@ -37,3 +37,11 @@ def test_every_configuration_runs_and_agrees_with_serial():
     assert sum("--scheduler" in n for n in names) >= 1
     assert all(wall > 0 for _, wall, *_ in rows)
     assert all("CPU" in ratio for name, _, ratio, _ in rows if name.startswith("`contact run"))
+
+
+@pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],
+                                  ["--cli", "--repeats", "two"]])
+def test_a_bad_repeat_count_is_refused_before_any_run(argv, capsys):
+    with pytest.raises(SystemExit) as exc:
+        bench_sweep.main(argv)
+    assert exc.value.code == 2 and "--repeats" in capsys.readouterr().err

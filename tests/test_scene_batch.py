@@ -332,6 +332,57 @@ def test_dask_local_cluster_equals_serial():
         assert repr(a.entry) == repr(b.entry)
 
 
+class GcOnSource(FakeSource):
+    """A FakeSource that records, as each case is built, whether the collector is on."""
+
+    def iter_cases(self, start=0, stop=None):
+        import gc
+        for case in super().iter_cases(start, stop):
+            yield case._replace(inputs={"gc": gc.isenabled()})
+
+
+def gc_states(cases):
+    """A chunk function: whether the collector was on as each case was built, and now."""
+    import gc
+    return [(case.inputs["gc"], gc.isenabled()) for case in cases]
+
+
+def collector_on(_):
+    """Whether this process's collector is on (a task for each of a pool's workers)."""
+    import gc
+    time.sleep(0.02)
+    return gc.isenabled()
+
+
+def test_a_chunk_runs_with_the_collector_paused_its_cases_built_included():
+    """run_chunk (a worker's run_range, the serial path) pauses the cyclic collector while
+    the chunk's cases are built and solved, and leaves it on after."""
+    import gc
+    assert gc.isenabled()
+    items = batch.run_range(gc_states, GcOnSource(fake_cases(6).cases), 1, 5).items
+    assert items == [(i, (False, False)) for i in range(1, 5)]
+    assert gc.isenabled()
+
+
+@pytest.mark.filterwarnings("ignore:This process .* is multi-threaded:DeprecationWarning")
+def test_a_fork_pool_that_ran_a_scene_keeps_its_collector():
+    """run_scene pauses the collector while it collects the results, and a pool's workers
+    are forked from inside that pause: a user's pool is left with its workers' collector on
+    for whatever it runs next."""
+    import gc
+    import multiprocessing
+    from contact.scene import parse_scene_text
+    scene = parse_scene_text(                   # more cases than the probe solved here
+        'title = "t"\n[material]\npreset = "zhou2014"\n[punch]\nkind = "cylindrical"\n'
+        'radius = 100.0\n[motion]\nload = 0.01\nspeed = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]\n'
+        'friction = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]\n[outputs]\nfields = ["ends"]\n')
+    assert scene.case_count > 2 * batch._PROBE
+    with ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("fork")) as ex:
+        run_scene(scene, executor=ex)
+        assert all(ex.map(collector_on, range(8)))
+    assert gc.isenabled()
+
+
 def test_built_specs_are_shared():
     s = _sweep()
     c0, c1 = s.cases()[:2]

@@ -229,7 +229,12 @@ def cli_rows(n_speed, n_friction, repeats=3):
             rc = subprocess.run(_contact_run(scene, out, *args), capture_output=True,
                                 text=True).returncode
             wall = time.perf_counter() - t0
-            return wall, rc, _children_cpu_s() + _cluster_cpu_s(cluster) - before
+            cpu = _children_cpu_s() + _cluster_cpu_s(cluster) - before
+            # each run as it ends, on stderr: a bench stopped at a time limit still tells
+            # what it measured
+            print(f"  {' '.join(args)}{' (small)' if scene is small else ''}: {wall:.2f} s, "
+                  f"CPU {cpu:.1f} s, exit {rc}", file=sys.stderr, flush=True)
+            return wall, rc, cpu
 
         def best(key, n):
             wall, rc, cpu = min(runs[key])
@@ -254,8 +259,9 @@ def cli_rows(n_speed, n_friction, repeats=3):
                          ""))
             return rows
         # a cluster of one worker has no pool to be held to (--jobs 1 solves in the process
-        # itself); the API rows (scaling_rows) measure it against a pool of one
-        for n in sorted({2, cores} & set(range(2, cores + 1))):
+        # itself); the API rows (scaling_rows) measure it against a pool of one.  The
+        # cluster of all cores first: the row a machine of many cores is run for
+        for n in sorted({2, cores} & set(range(2, cores + 1)), reverse=True):
             with local_cluster(n) as cl:
                 address = ("--scheduler", cl.scheduler_address)
                 run(address, small)                     # the workers import and load kernels
@@ -335,11 +341,21 @@ def memory_rows(jobs=0):
 def main(argv=None):
     """``--quick``: every configuration on small sweeps (the timings mean little);
     ``--cli``: the ``contact run`` rows alone (:func:`cli_rows`, on :func:`cli_side` of the
-    machine's cores), written to bench_sweep_cli.md: the table of a machine with many cores."""
+    machine's cores), written to bench_sweep_cli.md: the table of a machine with many cores;
+    ``--repeats N``: the best of N runs of each ``contact run`` (default 3)."""
+    import argparse
     from contact.scene import parse_scene_text
-    argv = sys.argv[1:] if argv is None else argv
+    parser = argparse.ArgumentParser(prog="python -m validation.bench_sweep",
+                                     description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="small sweeps")
+    parser.add_argument("--cli", action="store_true", help="the contact run rows alone")
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="runs of each contact run configuration, the best counts")
+    args = parser.parse_args(sys.argv[1:] if argv is None else argv)
+    if args.repeats < 1:
+        parser.error(f"--repeats must be at least 1, got {args.repeats}")
+    quick, cli_only, repeats = args.quick, args.cli, args.repeats
     OUT.mkdir(parents=True, exist_ok=True)
-    quick, cli_only = "--quick" in argv, "--cli" in argv
     cores = os.cpu_count() or 1
     rows = []
     if not cli_only:
@@ -353,7 +369,7 @@ def main(argv=None):
                                                          20 if quick else 316),
                                               source="<bench sweep 1e5>"))
     side = 20 if quick else cli_side(cores)
-    rows += cli_rows(side, side)
+    rows += cli_rows(side, side, repeats)
     if not (quick or cli_only):
         rows += memory_rows()
     lines = ["# sweep benchmarks", "",
