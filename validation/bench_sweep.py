@@ -14,8 +14,10 @@ Then ``contact run --quiet`` end to end (start-up, solving, writing result.json 
 sweep.csv) on 1e5 cases, 5e4 a core on a machine of more cores (:func:`cli_side`):
 ``--jobs N`` for N up to the machine's cores against ``--jobs 1`` (the issue's measure), and
 ``--scheduler`` to a Dask LocalCluster of N worker processes against ``--jobs N``, with the
-CPU time each run spent.  ``python -m validation.bench_sweep --cli`` runs these rows alone
-(bench_sweep_cli.md): the table of a machine with many cores.
+CPU time each run spent and where its wall time went (imports, to the first chunk of
+results, the stream of chunks, writing, exit: :data:`_TIMED_CONTACT_RUN`).  ``python -m
+validation.bench_sweep --cli`` runs these rows alone (bench_sweep_cli.md): the table of a
+machine with many cores.
 
 Targets (issue "sweeps that scale"):
 
@@ -192,6 +194,58 @@ def _contact_run(path, out, *args) -> list:
             *args]
 
 
+#: ``contact run`` as its console script runs it (:func:`contact.cli.console`: ``main``, then
+#: ``gc.freeze`` and exit), with the moments its phases end written to stderr as one line:
+#: ``PHASES`` and ``name=seconds`` fields, from the start of its Python code (the imports
+#: done; the first and the last chunk of results delivered; the files written).
+_TIMED_CONTACT_RUN = """
+import sys, time
+t0 = time.perf_counter()
+import gc
+import contact.cli
+import contact.scene.run as run
+marks = {"imported": time.perf_counter()}
+def iter_chunks(*args, _inner=run.iter_chunks, **kwargs):
+    for chunk in _inner(*args, **kwargs):
+        marks.setdefault("first", time.perf_counter())
+        yield chunk
+    marks["last"] = time.perf_counter()
+run.iter_chunks = iter_chunks
+status = contact.cli.main(sys.argv[1:])
+marks["written"] = time.perf_counter()
+gc.freeze()
+print("PHASES", *(f"{k}={v - t0:.4f}" for k, v in marks.items()), file=sys.stderr)
+sys.exit(status)
+"""
+
+
+def _timed_contact_run(path, out, *args) -> list:
+    """The command line of ``contact run --quiet ARGS`` through ``_TIMED_CONTACT_RUN``."""
+    return [sys.executable, "-c", _TIMED_CONTACT_RUN, "run", str(path), "--out", str(out),
+            "--quiet", *args]
+
+
+def _phases(stderr: str) -> dict:
+    """The ``PHASES`` line of a ``_TIMED_CONTACT_RUN``: {name: seconds} ({} without one)."""
+    for line in stderr.splitlines():
+        if line.startswith("PHASES "):
+            return {k: float(v) for k, v in (f.split("=") for f in line.split()[1:])}
+    return {}
+
+
+def phase_text(phases: dict, wall: float) -> str:
+    """Where a run's wall time went: start-up (imports, then to the first chunk of results),
+    the stream of chunks, the files written, the exit with the interpreter's start (before
+    the first mark) ("?" for a phase not reached)."""
+    at = {"start": 0.0, **phases, "end": wall}
+
+    def gap(a, b):
+        return f"{at[b] - at[a]:.2f}" if a in at and b in at else "?"
+    return (f"imports {gap('start', 'imported')} + to the first chunk {gap('imported', 'first')}"
+            f" + stream {gap('first', 'last')} + writing {gap('last', 'written')}"
+            f" + exit and interpreter start {gap('written', 'end')} s")
+
+
 #: Cases of ``contact run``'s timed sweep per core of the machine, 1e5 at least: its start-up
 #: (imports, numba loading its cached kernels: ~0.6 s) runs on one core, and N workers can
 #: reach 0.8 N only where the parallel work is at least 4 N - 5 times the start-up (Amdahl).
@@ -226,19 +280,22 @@ def cli_rows(n_speed, n_friction, repeats=3):
             shutil.rmtree(out, ignore_errors=True)
             before = _children_cpu_s() + _cluster_cpu_s(cluster)
             t0 = time.perf_counter()
-            rc = subprocess.run(_contact_run(scene, out, *args), capture_output=True,
-                                text=True).returncode
+            proc = subprocess.run(_timed_contact_run(scene, out, *args), capture_output=True,
+                                  text=True)
             wall = time.perf_counter() - t0
             cpu = _children_cpu_s() + _cluster_cpu_s(cluster) - before
+            phases = phase_text(_phases(proc.stderr), wall)
             # each run as it ends, on stderr: a bench stopped at a time limit still tells
             # what it measured
             print(f"  {' '.join(args)}{' (small)' if scene is small else ''}: {wall:.2f} s, "
-                  f"CPU {cpu:.1f} s, exit {rc}", file=sys.stderr, flush=True)
-            return wall, rc, cpu
+                  f"CPU {cpu:.1f} s, exit {proc.returncode}; {phases}", file=sys.stderr,
+                  flush=True)
+            return wall, proc.returncode, cpu, phases
 
         def best(key, n):
-            wall, rc, cpu = min(runs[key])
-            return wall, rc, f"CPU {cpu:.1f} s ({cpu / (n * wall):.0%} of {n} core(s))"
+            wall, rc, cpu, phases = min(runs[key], key=lambda r: r[0])
+            return wall, rc, (f"CPU {cpu:.1f} s ({cpu / (n * wall):.0%} of {n} core(s)); "
+                              f"{phases}")
 
         def failed(rc):
             return "" if rc == 0 else f" (FAILED: exit status {rc})"
@@ -249,7 +306,7 @@ def cli_rows(n_speed, n_friction, repeats=3):
         for jobs in counts:
             t, rc, busy = best(jobs, jobs)
             need = 1.7 if jobs == 2 else 0.8 * jobs
-            ratio = min(runs[1])[0] / t
+            ratio = min(r[0] for r in runs[1]) / t
             rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
                          f"{ratio:.2f}x --jobs 1; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
@@ -269,7 +326,7 @@ def cli_rows(n_speed, n_friction, repeats=3):
                     runs.setdefault(("dask", n), []).append(run(address, cluster=cl))
                     runs[n].append(run(("--jobs", str(n))))
             t, rc, busy = best(("dask", n), n)
-            pool = min(runs[n])[0]
+            pool = min(r[0] for r in runs[n])
             rows.append((f"`contact run --quiet --scheduler` (LocalCluster, {n} worker "
                          f"processes){failed(rc)}", t, f"{t / pool:.2f}x --jobs {n}; {busy}",
                          "<= 1.15x" + (" PASS" if t / pool <= 1.15 else " FAIL")))
