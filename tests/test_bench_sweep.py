@@ -45,11 +45,14 @@ def test_every_configuration_runs_and_agrees_with_serial():
 def test_phases_of_a_run_add_up_to_its_wall_time():
     """phase_text: the marks of _TIMED_CONTACT_RUN as consecutive intervals that add up to
     the wall time; a phase whose mark is missing (a run that failed before it) is '?'."""
-    marks = bench_sweep._phases("noise\nPHASES imported=0.5000 first=0.6000 last=3.1000 "
-                                "written=3.2500\n")
-    assert marks == {"imported": 0.5, "first": 0.6, "last": 3.1, "written": 3.25}
+    marks = bench_sweep._phases("noise\nPHASES imported=0.5000 first=0.6000 cpu_first=0.7 "
+                                "last=3.1000 cpu_last=1.2 written=3.2500\n")
+    assert marks == {"imported": 0.5, "first": 0.6, "cpu_first": 0.7, "last": 3.1,
+                     "cpu_last": 1.2, "written": 3.25}
     text = bench_sweep.phase_text(marks, 3.3)
-    parts = [float(w) for w in text.replace(" s", "").split() if w[0].isdigit()]
+    assert "(the command's process busy 20% of the stream)" in text     # 0.5 s CPU / 2.5 s
+    parts = [float(w) for w in text.split("(")[0].split() + text.split(")")[1].split()
+             if w[0].isdigit()]
     assert parts == [0.5, 0.1, 2.5, 0.15, 0.05] and abs(sum(parts) - 3.3) < 1e-9
     failed = bench_sweep.phase_text(bench_sweep._phases("PHASES imported=0.5"), 0.7)
     assert failed.count("?") == 4 and failed.startswith("imports 0.50")

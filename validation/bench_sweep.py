@@ -197,24 +197,29 @@ def _contact_run(path, out, *args) -> list:
 #: ``contact run`` as its console script runs it (:func:`contact.cli.console`: ``main``, then
 #: ``gc.freeze`` and exit), with the moments its phases end written to stderr as one line:
 #: ``PHASES`` and ``name=seconds`` fields, from the start of its Python code (the imports
-#: done; the first and the last chunk of results delivered; the files written).
+#: done; the first and the last chunk of results delivered; the files written), and the CPU
+#: time of the command's own process (all its threads, not its workers) at the first and the
+#: last chunk (``cpu_first``, ``cpu_last``): how busy it kept itself while the workers solved.
 _TIMED_CONTACT_RUN = """
 import sys, time
 t0 = time.perf_counter()
 import gc
 import contact.cli
 import contact.scene.run as run
-marks = {"imported": time.perf_counter()}
+def since_start():
+    return time.perf_counter() - t0
+marks = {"imported": since_start()}
 def iter_chunks(*args, _inner=run.iter_chunks, **kwargs):
     for chunk in _inner(*args, **kwargs):
-        marks.setdefault("first", time.perf_counter())
+        if "first" not in marks:
+            marks["first"], marks["cpu_first"] = since_start(), time.process_time()
         yield chunk
-    marks["last"] = time.perf_counter()
+    marks["last"], marks["cpu_last"] = since_start(), time.process_time()
 run.iter_chunks = iter_chunks
 status = contact.cli.main(sys.argv[1:])
-marks["written"] = time.perf_counter()
+marks["written"] = since_start()
 gc.freeze()
-print("PHASES", *(f"{k}={v - t0:.4f}" for k, v in marks.items()), file=sys.stderr)
+print("PHASES", *(f"{k}={v:.4f}" for k, v in marks.items()), file=sys.stderr)
 sys.exit(status)
 """
 
@@ -241,8 +246,12 @@ def phase_text(phases: dict, wall: float) -> str:
 
     def gap(a, b):
         return f"{at[b] - at[a]:.2f}" if a in at and b in at else "?"
+    busy = ""
+    if {"cpu_first", "cpu_last", "first", "last"} <= at.keys() and at["last"] > at["first"]:
+        share = (at["cpu_last"] - at["cpu_first"]) / (at["last"] - at["first"])
+        busy = f" (the command's process busy {share:.0%} of the stream)"
     return (f"imports {gap('start', 'imported')} + to the first chunk {gap('imported', 'first')}"
-            f" + stream {gap('first', 'last')} + writing {gap('last', 'written')}"
+            f" + stream {gap('first', 'last')}{busy} + writing {gap('last', 'written')}"
             f" + exit and interpreter start {gap('written', 'end')} s")
 
 
