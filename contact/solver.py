@@ -324,8 +324,8 @@ def cyclic_gc_paused():
         yield
     finally:
         with _gc_lock:
-            # max: a forked child that does come back through its parent's open pauses
-            # started from none (_gc_in_forked_child)
+            # max: a forked child that leaves the pauses it inherited open counted them as
+            # none (_gc_in_forked_child)
             _gc_pauses = max(0, _gc_pauses - 1)
             if _gc_pauses == 0 and _gc_on_before:
                 gc.enable()
