@@ -51,6 +51,9 @@ def test_phases_of_a_run_add_up_to_its_wall_time():
                      "cpu_last": 1.2, "written": 3.25}
     text = bench_sweep.phase_text(marks, 3.3)
     assert "(the command's process busy 20% of the stream)" in text     # 0.5 s CPU / 2.5 s
+    assert "forked" not in text                         # no pool that forks: no fork times
+    forked = bench_sweep.phase_text({**marks, "forked_first": 0.55, "forked_last": 0.58}, 3.3)
+    assert "to the first chunk 0.10 (workers forked at 0.55-0.58)" in forked
     parts = [float(w) for w in text.split("(")[0].split() + text.split(")")[1].split()
              if w[0].isdigit()]
     assert parts == [0.5, 0.1, 2.5, 0.15, 0.05] and abs(sum(parts) - 3.3) < 1e-9

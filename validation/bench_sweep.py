@@ -197,11 +197,12 @@ def _contact_run(path, out, *args) -> list:
 #: ``contact run`` as its console script runs it (:func:`contact.cli.console`: ``main``, then
 #: ``gc.freeze`` and exit), with the moments its phases end written to stderr as one line:
 #: ``PHASES`` and ``name=seconds`` fields, from the start of its Python code (the imports
-#: done; the first and the last chunk of results delivered; the files written), and the CPU
-#: time of the command's own process (all its threads, not its workers) at the first and the
-#: last chunk (``cpu_first``, ``cpu_last``): how busy it kept itself while the workers solved.
+#: done; the first and the last worker forked, for a pool that forks; the first and the last
+#: chunk of results delivered; the files written), and the CPU time of the command's own
+#: process (all its threads, not its workers) at the first and the last chunk
+#: (``cpu_first``, ``cpu_last``): how busy it kept itself while the workers solved.
 _TIMED_CONTACT_RUN = """
-import sys, time
+import os, sys, time
 t0 = time.perf_counter()
 import gc
 import contact.cli
@@ -216,8 +217,18 @@ def iter_chunks(*args, _inner=run.iter_chunks, **kwargs):
         yield chunk
     marks["last"], marks["cpu_last"] = since_start(), time.process_time()
 run.iter_chunks = iter_chunks
+forks, fork_log = os.pipe()     # each forked worker writes when it starts (same clock)
+os.register_at_fork(after_in_child=lambda: os.write(fork_log, b"%.4f " % since_start()))
 status = contact.cli.main(sys.argv[1:])
 marks["written"] = since_start()
+os.close(fork_log)
+os.set_blocking(forks, False)
+try:
+    forked = [float(t) for t in os.read(forks, 1 << 16).split()]
+except BlockingIOError:         # a worker still holds the pipe open and wrote nothing
+    forked = []
+if forked:
+    marks["forked_first"], marks["forked_last"] = min(forked), max(forked)
 gc.freeze()
 print("PHASES", *(f"{k}={v:.4f}" for k, v in marks.items()), file=sys.stderr)
 sys.exit(status)
@@ -246,11 +257,14 @@ def phase_text(phases: dict, wall: float) -> str:
 
     def gap(a, b):
         return f"{at[b] - at[a]:.2f}" if a in at and b in at else "?"
-    busy = ""
+    busy = forks = ""
     if {"cpu_first", "cpu_last", "first", "last"} <= at.keys() and at["last"] > at["first"]:
         share = (at["cpu_last"] - at["cpu_first"]) / (at["last"] - at["first"])
         busy = f" (the command's process busy {share:.0%} of the stream)"
+    if {"forked_first", "forked_last"} <= at.keys():
+        forks = f" (workers forked at {at['forked_first']:.2f}-{at['forked_last']:.2f})"
     return (f"imports {gap('start', 'imported')} + to the first chunk {gap('imported', 'first')}"
+            f"{forks}"
             f" + stream {gap('first', 'last')}{busy} + writing {gap('last', 'written')}"
             f" + exit and interpreter start {gap('written', 'end')} s")
 
