@@ -217,16 +217,19 @@ def iter_chunks(*args, _inner=run.iter_chunks, **kwargs):
         yield chunk
     marks["last"], marks["cpu_last"] = since_start(), time.process_time()
 run.iter_chunks = iter_chunks
-forks, fork_log = os.pipe()     # each forked worker writes when it starts (same clock)
-os.register_at_fork(after_in_child=lambda: os.write(fork_log, b"%.4f " % since_start()))
+forked = []
+if hasattr(os, "register_at_fork"):     # POSIX: each forked worker writes when it starts
+    forks, fork_log = os.pipe()
+    os.register_at_fork(after_in_child=lambda: os.write(fork_log, b"%.4f " % since_start()))
 status = contact.cli.main(sys.argv[1:])
 marks["written"] = since_start()
-os.close(fork_log)
-os.set_blocking(forks, False)
-try:
-    forked = [float(t) for t in os.read(forks, 1 << 16).split()]
-except BlockingIOError:         # a worker still holds the pipe open and wrote nothing
-    forked = []
+if hasattr(os, "register_at_fork"):
+    os.close(fork_log)
+    os.set_blocking(forks, False)
+    try:
+        forked = [float(t) for t in os.read(forks, 1 << 16).split()]
+    except BlockingIOError:             # a worker still holds the pipe open, wrote nothing
+        pass
 if forked:
     marks["forked_first"], marks["forked_last"] = min(forked), max(forked)
 gc.freeze()
