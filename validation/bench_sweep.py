@@ -188,23 +188,22 @@ def breakdown_rows(scene):
             for name, t in parts]
 
 
-def _contact_run(path, out, *args) -> list:
-    """The command line of ``contact run --quiet ARGS`` on a scene file, in this Python."""
-    return [sys.executable, "-m", "contact", "run", str(path), "--out", str(out), "--quiet",
-            *args]
+def _contact_run(path, out, *args, entry=("-m", "contact")) -> list:
+    """The command line of ``contact run --quiet ARGS`` on a scene file, in this Python
+    (``entry``: how the interpreter is told to run it, ``python -m contact`` by default)."""
+    return [sys.executable, *entry, "run", str(path), "--out", str(out), "--quiet", *args]
 
 
-#: ``contact run`` as its console script runs it (:func:`contact.cli.console`: ``main``, then
-#: ``gc.freeze`` and exit), with the moments its phases end written to stderr as one line:
-#: ``PHASES`` and ``name=seconds`` fields, from the start of its Python code (the imports
-#: done; the first and the last worker forked, for a pool that forks; the first and the last
-#: chunk of results delivered; the files written), and the CPU time of the command's own
-#: process (all its threads, not its workers) at the first and the last chunk
-#: (``cpu_first``, ``cpu_last``): how busy it kept itself while the workers solved.
+#: ``contact run`` as its console script runs it (:func:`contact.cli.console`), with the
+#: moments its phases end written to stderr as one line as it exits: ``PHASES`` and
+#: ``name=seconds`` fields, from the start of its Python code (the imports done; the first
+#: and the last worker forked, for a pool that forks; the first and the last chunk of
+#: results delivered; the files written), and the CPU time of the command's own process (all
+#: its threads, not its workers) at the first and the last chunk (``cpu_first``,
+#: ``cpu_last``): how busy it kept itself while the workers solved.
 _TIMED_CONTACT_RUN = """
 import os, sys, time
 t0 = time.perf_counter()
-import gc
 import contact.cli
 import contact.scene.run as run
 def since_start():
@@ -217,31 +216,30 @@ def iter_chunks(*args, _inner=run.iter_chunks, **kwargs):
         yield chunk
     marks["last"], marks["cpu_last"] = since_start(), time.process_time()
 run.iter_chunks = iter_chunks
-forked = []
+forks = None
 if hasattr(os, "register_at_fork"):     # POSIX: each forked worker writes when it starts
     forks, fork_log = os.pipe()
     os.register_at_fork(after_in_child=lambda: os.write(fork_log, b"%.4f " % since_start()))
-status = contact.cli.main(sys.argv[1:])
-marks["written"] = since_start()
-if hasattr(os, "register_at_fork"):
-    os.close(fork_log)
-    os.set_blocking(forks, False)
-    try:
-        forked = [float(t) for t in os.read(forks, 1 << 16).split()]
-    except BlockingIOError:             # a worker still holds the pipe open, wrote nothing
-        pass
-if forked:
-    marks["forked_first"], marks["forked_last"] = min(forked), max(forked)
-gc.freeze()
-print("PHASES", *(f"{k}={v:.4f}" for k, v in marks.items()), file=sys.stderr)
-sys.exit(status)
+try:
+    contact.cli.console()               # main(), then out by SystemExit
+finally:
+    marks["written"] = since_start()
+    if forks is not None:
+        os.close(fork_log)
+        os.set_blocking(forks, False)
+        try:
+            forked = [float(t) for t in os.read(forks, 1 << 16).split()]
+        except BlockingIOError:         # a worker still holds the pipe open, wrote nothing
+            forked = []
+        if forked:
+            marks["forked_first"], marks["forked_last"] = min(forked), max(forked)
+    print("PHASES", *(f"{k}={v:.4f}" for k, v in marks.items()), file=sys.stderr)
 """
 
 
 def _timed_contact_run(path, out, *args) -> list:
     """The command line of ``contact run --quiet ARGS`` through ``_TIMED_CONTACT_RUN``."""
-    return [sys.executable, "-c", _TIMED_CONTACT_RUN, "run", str(path), "--out", str(out),
-            "--quiet", *args]
+    return _contact_run(path, out, *args, entry=("-c", _TIMED_CONTACT_RUN))
 
 
 def _phases(stderr: str) -> dict:
