@@ -460,12 +460,10 @@ def speed_entry(material: contact.Orthotropic, speed: float, fields) -> dict:
 
 def _solved_and_encoded(encode, cases) -> list:
     """:func:`run_cases`, each result passed through ``encode`` (what a worker runs for a
-    writer that wants its cases encoded where they are solved), the collector paused
-    throughout (:func:`contact.solver.cyclic_gc_paused`: the chunk's results are alive
-    until it returns, and a Dask worker holds several times a pool worker's objects for
-    each pass to walk)."""
-    with cyclic_gc_paused():
-        return [r if isinstance(r, Exception) else encode(r) for r in run_cases(cases)]
+    writer that wants its cases encoded where they are solved), as the chunk function of
+    :func:`contact.scene.batch.iter_chunks`: its chunks run with the collector paused
+    throughout (:func:`contact.scene.batch.run_chunk`), the encoding included."""
+    return [r if isinstance(r, Exception) else encode(r) for r in run_cases(cases)]
 
 
 def iter_scene(scene: Scene, executor: Executor | None = None, progress: bool = False,
