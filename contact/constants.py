@@ -48,7 +48,6 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .errors import NearRayleighWarning, SpeedError
 from .material import Orthotropic, check_speed
@@ -162,7 +161,7 @@ def limiting_speed(material: Orthotropic) -> float:
     The smallest of 1 (shear wave, d = 0), sqrt(C11/C33) (longitudinal wave, d = 0) and the
     speed where eta1 + eta2 = 0 (a complex pair eta^2 becomes a negative double root).
     S^2 = 2P - b/a is positive at c = 0 for every positive definite stiffness and strictly
-    decreasing in c, so that speed is found by bracketing (scipy.optimize.brentq).
+    decreasing in c, so that speed is found by bisection (:func:`_decreasing_root`).
 
     Parameters
     ----------
@@ -203,7 +202,7 @@ def rayleigh_speed(material: Orthotropic) -> float:
     Delta > 0 at c = 0 and Delta <= 0 at the limiting speed c_L <= 1 (a subsonic surface wave
     exists for an orthotropic half-space; also checked on 20000 random stiffnesses, each with
     a single sign change of Delta on (0, c_L)), so c_R is bracketed in (0, c_L] and found
-    with scipy.optimize.brentq on Delta / sqrt(C11'), polished by bisection to about one ulp.
+    by bisection on Delta / sqrt(C11') to about one ulp (:func:`_decreasing_root`).
     Zhou et al. 2014 material: c_R = 0.9936147...; isotropic nu = 0.25: 0.9194017...
     The admissible speeds are 0 <= c < c_R (the paper, Sec. 6.1, gives [0, 1): see the
     documentation, Theory: errata of Zhou et al. 2014).
@@ -243,19 +242,16 @@ def rayleigh_speed(material: Orthotropic) -> float:
 def _decreasing_root(f, lo: float, hi: float) -> float:
     """Root of f with f(lo) > 0 >= f(hi), to about one ulp.
 
-    scipy.optimize.brentq gets within a few ulp; bisection then narrows the bracket to two
-    adjacent doubles (f > 0 at the left one, f <= 0 at the right one) and returns the one with
-    the smaller |f|.  The rounding noise of f itself limits this to about one ulp.
+    Bisection down to two adjacent doubles (f > 0 at the left one, f <= 0 at the right
+    one), returning the one with the smaller |f|; the rounding noise of f itself limits
+    this to about one ulp.  Bisection rather than scipy.optimize.brentq: Brent's method
+    stops a few ulp away and needs this bisection after it anyway, and importing
+    scipy.optimize costs ~0.3 s of every start of the ``contact`` command and of every
+    worker process that is not forked (half their start-up), for a root memoised per
+    material that bisection finds in ~60 evaluations of f (~0.1 ms).
     """
-    x = brentq(f, lo, hi, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=200)
-    a = b = x
-    step = np.spacing(x)
-    while not f(a) > 0.0:                        # widen to a bracket f(a) > 0 >= f(b)
-        a, step = max(lo, a - step), 2 * step
-    step = np.spacing(x)
-    while f(b) > 0.0:
-        b, step = min(hi, b + step), 2 * step
-    while True:                                  # bisect down to adjacent doubles
+    a, b = float(lo), float(hi)
+    while True:
         mid = 0.5 * (a + b)
         if not a < mid < b:
             break

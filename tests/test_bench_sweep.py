@@ -35,7 +35,10 @@ def test_every_configuration_runs_and_agrees_with_serial():
     assert sum("process pool" in n for n in names) >= 2
     assert sum("Dask LocalCluster" in n for n in names) >= 2
     assert sum("--scheduler" in n for n in names) >= 1
-    assert all(wall > 0 for _, wall, *_ in rows)
+    assert all(wall > 0 for name, wall, *_ in rows if "ceiling" not in name)
+    # the machine's ceiling measured for every pool size timed, one process its unit
+    (ceiling,) = [ratio for name, _, ratio, _ in rows if "ceiling" in name]
+    assert ceiling.startswith("N = 1: 1.00x (slowest process 1.00x the fastest); N = 2: ")
     cli = [ratio for name, _, ratio, _ in rows if name.startswith("`contact run")]
     assert cli and all("CPU" in ratio for ratio in cli)
     # every phase of each run reached and timed (the driver wraps the chunks' iterator)
@@ -59,6 +62,16 @@ def test_phases_of_a_run_add_up_to_its_wall_time():
     assert parts == [0.5, 0.1, 2.5, 0.15, 0.05] and abs(sum(parts) - 3.3) < 1e-9
     failed = bench_sweep.phase_text(bench_sweep._phases("PHASES imported=0.5"), 0.7)
     assert failed.count("?") == 4 and failed.startswith("imports 0.50")
+
+
+def test_the_machines_ceiling_counts_what_each_process_solved():
+    """independent_speedups: one process alone is the unit; N processes' summed rate over it
+    is positive and finite, and the slowest of them is at least as slow as the fastest."""
+    up = bench_sweep.independent_speedups(bench_sweep.sweep_toml(30, 30), [2], cases=300,
+                                          repeats=1)
+    assert sorted(up) == [1, 2] and up[1] == (1.0, 1.0)
+    speedup, spread = up[2]
+    assert 0.0 < speedup < 2.5 and spread >= 1.0
 
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],

@@ -172,6 +172,35 @@ def test_jobs_pool_forks_from_the_warm_process_on_linux():
         assert ex.submit(os.getppid).result() == os.getpid()
 
 
+#: scipy subpackages whose import would weigh on every start of the command and of every
+#: worker that is not forked (scipy.optimize alone: ~0.3 s, half the start-up), none of which
+#: a punch of the paper needs: they are imported where a face of samples or a zone search
+#: of a general face uses them.
+_HEAVY_AT_START = ("scipy.optimize", "scipy.interpolate", "scipy.differentiate")
+
+
+def test_a_moving_sweep_runs_without_the_heavy_scipy_subpackages(tmp_path):
+    """The default scene's punch at a speed (the Rayleigh speed found: the bisection of
+    contact.constants) and with friction, from a fresh interpreter: scipy.optimize,
+    scipy.interpolate and scipy.differentiate are never imported."""
+    scene = tmp_path / "moving.toml"
+    scene.write_text('title = "moving"\n[material]\npreset = "zhou2014"\n[punch]\n'
+                     'kind = "cylindrical"\nradius = 100.0\n[motion]\nload = 0.01\n'
+                     'speed = [0.0, 0.5, 0.9]\nfriction = [0.0, 0.3]\n[outputs]\n'
+                     'fields = ["ends", "exponents", "sif"]\n')
+    child = ("import sys, contact.cli\n"
+             f"status = contact.cli.main(['run', {str(scene)!r}, '--out', "
+             f"{str(tmp_path / 'out')!r}, '--quiet', '--no-figures'])\n"
+             f"print(status, [m for m in {_HEAVY_AT_START!r} if m in sys.modules])\n")
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    proc = subprocess.run([sys.executable, "-c", child], env=env, capture_output=True,
+                          text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert proc.stdout.split("\n")[-2] == "0 []"
+    assert len(cases_of(tmp_path / "out" / "result.json")) == 6
+
+
 def test_run_scene_through_an_executor_equals_serial():
     from concurrent.futures import ThreadPoolExecutor
     s = load_scene(SCENES / "fig2a_triangular_speed.toml")

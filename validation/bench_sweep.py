@@ -15,7 +15,9 @@ sweep.csv) on 1e5 cases, 5e4 a core on a machine of more cores (:func:`cli_side`
 ``--jobs N`` for N up to the machine's cores against ``--jobs 1`` (the issue's measure), and
 ``--scheduler`` to a Dask LocalCluster of N worker processes against ``--jobs N``, with the
 CPU time each run spent and where its wall time went (imports, to the first chunk of
-results, the stream of chunks, writing, exit: :data:`_TIMED_CONTACT_RUN`).  ``python -m
+results, the stream of chunks, writing, exit: :data:`_TIMED_CONTACT_RUN`), and the machine's
+own ceiling for N workers: N processes solving the same cases at once with nothing passed
+between them (:func:`independent_speedups`), the most any pool could reach there.  ``python -m
 validation.bench_sweep --cli`` runs these rows alone (bench_sweep_cli.md): the table of a
 machine with many cores.
 
@@ -270,6 +272,75 @@ def phase_text(phases: dict, wall: float) -> str:
             f" + exit and interpreter start {gap('written', 'end')} s")
 
 
+#: Cases each process of :func:`independent_speedups` solves (~1.2 s on the 2-core VM).
+CEILING_CASES = 20_000
+
+
+def _solve_alone(fn, scene, start, stop, chunk, conn):
+    """Solve the cases start <= index < stop of ``scene`` in chunks of ``chunk`` as a worker
+    of ``contact run`` would (:func:`contact.scene.batch.run_range`), keeping nothing, and
+    send back the (wall, CPU) seconds it took."""
+    from contact.scene.batch import run_range
+    t0, c0 = time.perf_counter(), time.process_time()
+    for s in range(start, stop, chunk):
+        run_range(fn, scene, s, min(stop, s + chunk))
+    conn.send((time.perf_counter() - t0, time.process_time() - c0))
+    conn.close()
+
+
+def independent_speedups(text, counts, cases=CEILING_CASES, repeats=REPEATS) -> dict:
+    """The machine's own ceiling for N workers: {N: (speed-up, slowest / fastest process)}.
+
+    N processes forked from this one (warm) each solve the same ``cases`` cases of the sweep
+    of TOML ``text`` (a range from its middle) in chunks of ``TARGET_CHUNK_S`` of work, with
+    the chunk function of ``contact run`` (each case encoded as its writers want it), at the
+    same time, nothing passing between them or to a parent: what a pool's workers do, less
+    the pool.  The speed-up is their summed rate, cases / wall of each, against one process
+    alone (the best of ``repeats`` rounds, the counts in turns): above what any pool of N
+    workers can reach where the machine runs N busy processes slower than one (shared
+    physical cores, memory bandwidth, a hypervisor's other guests).  {} where processes
+    cannot be forked."""
+    import functools
+    import multiprocessing as mp
+    from contact.scene import SceneWriter, parse_scene_text
+    from contact.scene.batch import TARGET_CHUNK_S, run_range
+    from contact.scene.run import _solved_and_encoded
+    if "fork" not in mp.get_all_start_methods():
+        return {}
+    ctx = mp.get_context("fork")
+    scene = parse_scene_text(text, source="<bench ceiling>")
+    with tempfile.TemporaryDirectory() as tmp:
+        writer = SceneWriter(scene, Path(tmp) / "out", scene.case_count, figures=False,
+                             table=False)
+        fn = functools.partial(_solved_and_encoded, writer.encoder())
+        run_range(fn, scene, 0, 64)                             # warm this process
+        per_case = run_range(fn, scene, 64, 320).seconds / 256
+        chunk = max(1, int(TARGET_CHUNK_S / per_case))
+        start = max(0, (scene.case_count - cases) // 2)
+        stop = min(scene.case_count, start + cases)
+        counts = sorted(set(counts) | {1})
+        rates = {n: [] for n in counts}
+        for _ in range(repeats):
+            for n in counts:
+                pipes, procs = [], []
+                for _ in range(n):
+                    recv, send = ctx.Pipe(duplex=False)
+                    procs.append(ctx.Process(target=_solve_alone, args=(
+                        fn, scene, start, stop, chunk, send)))
+                    pipes.append(recv)
+                for proc in procs:
+                    proc.start()
+                walls = [pipe.recv()[0] for pipe in pipes]
+                for proc in procs:
+                    proc.join()
+                rates[n].append((sum((stop - start) / w for w in walls),
+                                 max(walls) / min(walls)))
+        writer.abort()
+    one = max(rates[1])[0]
+    return {n: (rate / one, spread) for n, (rate, spread) in
+            ((n, max(runs)) for n, runs in rates.items())}
+
+
 #: Cases of ``contact run``'s timed sweep per core of the machine, 1e5 at least: its start-up
 #: (imports, numba loading its cached kernels: ~0.6 s) runs on one core, and N workers can
 #: reach 0.8 N only where the parallel work is at least 4 N - 5 times the start-up (Amdahl).
@@ -327,14 +398,25 @@ def cli_rows(n_speed, n_friction, repeats=3):
         for _ in range(repeats):
             for jobs in counts:
                 runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
+        ceiling = independent_speedups(sweep_toml(n_speed, n_friction), counts,
+                                       repeats=repeats)
         for jobs in counts:
             t, rc, busy = best(jobs, jobs)
             need = 1.7 if jobs == 2 else 0.8 * jobs
             ratio = min(r[0] for r in runs[1]) / t
+            of = "" if jobs == 1 or jobs not in ceiling else \
+                f" ({ratio / ceiling[jobs][0]:.0%} of the machine's ceiling)"
             rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
-                         f"{ratio:.2f}x --jobs 1; {busy}",
+                         f"{ratio:.2f}x --jobs 1{of}; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
+        if ceiling:
+            rows.append((f"the machine's ceiling: N processes solving the same "
+                         f"{min(CEILING_CASES, n_speed * n_friction)} cases each at once, "
+                         "nothing passed between them", float("nan"),
+                         "; ".join(f"N = {n}: {up:.2f}x (slowest process {spread:.2f}x the "
+                                   "fastest)" for n, (up, spread) in ceiling.items()),
+                         "above any pool"))
         if importlib.util.find_spec("distributed") is None:
             rows.append(("`contact run --scheduler`", float("nan"), "distributed not installed",
                          ""))
