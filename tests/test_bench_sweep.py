@@ -4,6 +4,7 @@ pools and Dask clusters give the serial run's results, and ``contact run`` exits
 and are not judged here; what is checked is that the benchmark works and that its Dask
 settings reach the workers as the README says (no statistical profiler, MALLOC_TRIM_THRESHOLD_
 unset, Dask's one-thread BLAS limits kept)."""
+import math
 import os
 
 import pytest
@@ -38,9 +39,11 @@ def test_every_configuration_runs_and_agrees_with_serial():
     assert all(wall > 0 for name, wall, *_ in rows if "ceiling" not in name)
     # the machine's ceiling measured for every pool size timed, one process its unit
     (ceiling,) = [ratio for name, _, ratio, _ in rows if "ceiling" in name]
-    assert ceiling.startswith("N = 1: 1.00x (slowest process 1.00x the fastest); N = 2: ")
+    assert ceiling.startswith("N = 1: 1.00x one (slowest process 1.00x the fastest); N = 2: ")
     cli = [ratio for name, _, ratio, _ in rows if name.startswith("`contact run")]
     assert cli and all("CPU" in ratio for ratio in cli)
+    assert all("solving alone just before" in ratio for name, _, ratio, _ in rows
+               if name.startswith("`contact run --quiet --jobs"))
     # every phase of each run reached and timed (the driver wraps the chunks' iterator)
     assert all("to the first chunk" in ratio and "?" not in ratio for ratio in cli), cli
 
@@ -64,14 +67,14 @@ def test_phases_of_a_run_add_up_to_its_wall_time():
     assert failed.count("?") == 4 and failed.startswith("imports 0.50")
 
 
-def test_the_machines_ceiling_counts_what_each_process_solved():
-    """independent_speedups: one process alone is the unit; N processes' summed rate over it
-    is positive and finite, and the slowest of them is at least as slow as the fastest."""
-    up = bench_sweep.independent_speedups(bench_sweep.sweep_toml(30, 30), [2], cases=300,
-                                          repeats=1)
-    assert sorted(up) == [1, 2] and up[1] == (1.0, 1.0)
-    speedup, spread = up[2]
-    assert 0.0 < speedup < 2.5 and spread >= 1.0
+def test_processes_alone_count_what_each_solved():
+    """processes_alone: n processes' summed rate is positive and finite, about n times one
+    process's at most (they solve the same cases), and the slowest of them is at least as
+    slow as the fastest."""
+    with bench_sweep.processes_alone(bench_sweep.sweep_toml(30, 30), cases=300) as alone:
+        (one, spread1), (two, spread2) = alone(1), alone(2)
+    assert spread1 == 1.0 and spread2 >= 1.0
+    assert 0.0 < one < math.inf and 0.0 < two < 2.5 * one
 
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],

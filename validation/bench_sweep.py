@@ -17,7 +17,8 @@ sweep.csv) on 1e5 cases, 5e4 a core on a machine of more cores (:func:`cli_side`
 CPU time each run spent and where its wall time went (imports, to the first chunk of
 results, the stream of chunks, writing, exit: :data:`_TIMED_CONTACT_RUN`), and the machine's
 own ceiling for N workers: N processes solving the same cases at once with nothing passed
-between them (:func:`independent_speedups`), the most any pool could reach there.  ``python -m
+between them (:func:`processes_alone`), measured just before each ``--jobs N`` run: the
+most any pool could reach there, at that time.  ``python -m
 validation.bench_sweep --cli`` runs these rows alone (bench_sweep_cli.md): the table of a
 machine with many cores.
 
@@ -32,6 +33,7 @@ Targets (issue "sweeps that scale"):
 """
 from __future__ import annotations
 
+import contextlib
 import importlib.util
 import math
 import os
@@ -272,41 +274,48 @@ def phase_text(phases: dict, wall: float) -> str:
             f" + exit and interpreter start {gap('written', 'end')} s")
 
 
-#: Cases each process of :func:`independent_speedups` solves (~1.2 s on the 2-core VM).
+#: Cases each process of :func:`processes_alone` solves (~1.2 s on the 2-core VM).
 CEILING_CASES = 20_000
 
 
-def _solve_alone(fn, scene, start, stop, chunk, conn):
-    """Solve the cases start <= index < stop of ``scene`` in chunks of ``chunk`` as a worker
-    of ``contact run`` would (:func:`contact.scene.batch.run_range`), keeping nothing, and
-    send back the (wall, CPU) seconds it took."""
+def _solve_alone(fn, scene, ranges, chunk, conn):
+    """Solve the cases start <= index < stop of ``scene`` for each (start, stop) of
+    ``ranges`` in chunks of ``chunk`` as a worker of ``contact run`` would
+    (:func:`contact.scene.batch.run_range`), keeping nothing, and send back the wall seconds
+    it took."""
     from contact.scene.batch import run_range
-    t0, c0 = time.perf_counter(), time.process_time()
-    for s in range(start, stop, chunk):
-        run_range(fn, scene, s, min(stop, s + chunk))
-    conn.send((time.perf_counter() - t0, time.process_time() - c0))
+    t0 = time.perf_counter()
+    for start, stop in ranges:
+        for s in range(start, stop, chunk):
+            run_range(fn, scene, s, min(stop, s + chunk))
+    conn.send(time.perf_counter() - t0)
     conn.close()
 
 
-def independent_speedups(text, counts, cases=CEILING_CASES, repeats=REPEATS) -> dict:
-    """The machine's own ceiling for N workers: {N: (speed-up, slowest / fastest process)}.
+@contextlib.contextmanager
+def processes_alone(text, cases=CEILING_CASES):
+    """The machine's own ceiling for N workers, measured when asked: a function ``alone(n)``
+    -> (cases a second, slowest / fastest process) of n processes solving at once (None where
+    processes cannot be forked).
 
-    N processes forked from this one (warm) each solve the same ``cases`` cases of the sweep
-    of TOML ``text`` (a range from its middle) in chunks of ``TARGET_CHUNK_S`` of work, with
-    the chunk function of ``contact run`` (each case encoded as its writers want it), at the
-    same time, nothing passing between them or to a parent: what a pool's workers do, less
-    the pool.  The speed-up is their summed rate, cases / wall of each, against one process
-    alone (the best of ``repeats`` rounds, the counts in turns): above what any pool of N
-    workers can reach where the machine runs N busy processes slower than one (shared
-    physical cores, memory bandwidth, a hypervisor's other guests).  {} where processes
-    cannot be forked."""
+    The n processes, forked from this one (warm), each solve the same ``cases`` cases of the
+    sweep of TOML ``text`` (ten stretches spread over it, so that they mix its inputs as the
+    whole sweep does) in chunks of ``TARGET_CHUNK_S`` of work,
+    with the chunk function of ``contact run`` (each case encoded as its writers want it),
+    nothing passing between them or to a parent: what a pool's workers do, less the pool.
+    Their rate is the sum of each one's cases / wall.  On a machine that runs n busy
+    processes slower than one (shared physical cores, memory bandwidth, a hypervisor's other
+    guests), n times the rate of one is out of any pool's reach; and on one whose speed
+    drifts from minute to minute, a pool is best judged against this rate measured just
+    before it."""
     import functools
     import multiprocessing as mp
     from contact.scene import SceneWriter, parse_scene_text
     from contact.scene.batch import TARGET_CHUNK_S, run_range
     from contact.scene.run import _solved_and_encoded
     if "fork" not in mp.get_all_start_methods():
-        return {}
+        yield None
+        return
     ctx = mp.get_context("fork")
     scene = parse_scene_text(text, source="<bench ceiling>")
     with tempfile.TemporaryDirectory() as tmp:
@@ -316,29 +325,30 @@ def independent_speedups(text, counts, cases=CEILING_CASES, repeats=REPEATS) -> 
         run_range(fn, scene, 0, 64)                             # warm this process
         per_case = run_range(fn, scene, 64, 320).seconds / 256
         chunk = max(1, int(TARGET_CHUNK_S / per_case))
-        start = max(0, (scene.case_count - cases) // 2)
-        stop = min(scene.case_count, start + cases)
-        counts = sorted(set(counts) | {1})
-        rates = {n: [] for n in counts}
-        for _ in range(repeats):
-            for n in counts:
-                pipes, procs = [], []
-                for _ in range(n):
-                    recv, send = ctx.Pipe(duplex=False)
-                    procs.append(ctx.Process(target=_solve_alone, args=(
-                        fn, scene, start, stop, chunk, send)))
-                    pipes.append(recv)
-                for proc in procs:
-                    proc.start()
-                walls = [pipe.recv()[0] for pipe in pipes]
-                for proc in procs:
-                    proc.join()
-                rates[n].append((sum((stop - start) / w for w in walls),
-                                 max(walls) / min(walls)))
-        writer.abort()
-    one = max(rates[1])[0]
-    return {n: (rate / one, spread) for n, (rate, spread) in
-            ((n, max(runs)) for n, runs in rates.items())}
+        # ten stretches spread over the sweep: its mix of speeds and frictions
+        total = scene.case_count
+        length = max(1, min(cases, total) // 10)
+        ranges = [(k * (total - length) // 9, k * (total - length) // 9 + length)
+                  for k in range(10)]
+        solved = 10 * length
+
+        def alone(n):
+            pipes, procs = [], []
+            for _ in range(n):
+                recv, send = ctx.Pipe(duplex=False)
+                procs.append(ctx.Process(target=_solve_alone,
+                                         args=(fn, scene, ranges, chunk, send)))
+                pipes.append(recv)
+            for proc in procs:
+                proc.start()
+            walls = [pipe.recv() for pipe in pipes]
+            for proc in procs:
+                proc.join()
+            return sum(solved / w for w in walls), max(walls) / min(walls)
+        try:
+            yield alone
+        finally:
+            writer.abort()
 
 
 #: Cases of ``contact run``'s timed sweep per core of the machine, 1e5 at least: its start-up
@@ -359,10 +369,14 @@ def cli_rows(n_speed, n_friction, repeats=3):
     machine's cores, against ``--jobs 1``: what a user of the command sees, and the issue's
     measure (>= 0.8 N, >= 1.7x on 2 cores).  Then ``--scheduler`` to a Dask LocalCluster of
     2 and of all cores' worker processes (started here, warmed on a small sweep), against
-    ``--jobs N``.  The runs compared go in turns (--jobs 1, 2, ..., then again; the cluster
+    ``--jobs N``, each cluster run against the pool run right after it (the median of
+    their ratios).  The runs compared go in turns (--jobs 1, 2, ..., then again; the cluster
     and the pool of its size in turns), so that a slower spell of a shared machine weighs
-    on each alike.  Each row gives the CPU time of the run's processes together and how
-    much of N cores it kept busy."""
+    on each alike; before each ``--jobs N`` run, N processes solve alone
+    (:func:`processes_alone`), and the run's rate is given as a share of theirs: what the
+    pool and the command's start-up and writing cost, on a machine whose speed drifts
+    between runs (the 16-core machine's did by up to 1.5x over minutes).  Each row gives the
+    CPU time of the run's processes together and how much of N cores it kept busy."""
     cores = os.cpu_count() or 1
     rows, runs = [], {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -395,27 +409,35 @@ def cli_rows(n_speed, n_friction, repeats=3):
         def failed(rc):
             return "" if rc == 0 else f" (FAILED: exit status {rc})"
         counts = sorted({1, 2, 4, 8, 16, cores} & set(range(1, cores + 1)))
-        for _ in range(repeats):
-            for jobs in counts:
-                runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
-        ceiling = independent_speedups(sweep_toml(n_speed, n_friction), counts,
-                                       repeats=repeats)
+        solo = {}                       # N -> [(rate, spread) of N processes alone]
+        with processes_alone(sweep_toml(n_speed, n_friction)) as alone:
+            for _ in range(repeats):
+                for jobs in counts:
+                    if alone is not None:
+                        solo.setdefault(jobs, []).append(alone(jobs))
+                    runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
+        cases = n_speed * n_friction
         for jobs in counts:
             t, rc, busy = best(jobs, jobs)
             need = 1.7 if jobs == 2 else 0.8 * jobs
             ratio = min(r[0] for r in runs[1]) / t
-            of = "" if jobs == 1 or jobs not in ceiling else \
-                f" ({ratio / ceiling[jobs][0]:.0%} of the machine's ceiling)"
+            # the run's rate against that of N processes solving alone just before it
+            of = ""
+            if jobs in solo:
+                share = _median(cases / r[0] / rate
+                                for r, (rate, _) in zip(runs[jobs], solo[jobs]))
+                of = f" ({share:.0%} of the rate of {jobs} process(es) solving alone just before)"
             rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
                          f"{ratio:.2f}x --jobs 1{of}; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
-        if ceiling:
+        if solo:
+            one = max(solo[1])[0]
             rows.append((f"the machine's ceiling: N processes solving the same "
-                         f"{min(CEILING_CASES, n_speed * n_friction)} cases each at once, "
-                         "nothing passed between them", float("nan"),
-                         "; ".join(f"N = {n}: {up:.2f}x (slowest process {spread:.2f}x the "
-                                   "fastest)" for n, (up, spread) in ceiling.items()),
+                         f"{min(CEILING_CASES, cases) // 10 * 10} cases each at once, nothing passed "
+                         "between them", float("nan"),
+                         "; ".join(f"N = {n}: {max(r)[0] / one:.2f}x one (slowest process "
+                                   f"{max(r)[1]:.2f}x the fastest)" for n, r in solo.items()),
                          "above any pool"))
         if importlib.util.find_spec("distributed") is None:
             rows.append(("`contact run --scheduler`", float("nan"), "distributed not installed",
@@ -432,11 +454,20 @@ def cli_rows(n_speed, n_friction, repeats=3):
                     runs.setdefault(("dask", n), []).append(run(address, cluster=cl))
                     runs[n].append(run(("--jobs", str(n))))
             t, rc, busy = best(("dask", n), n)
-            pool = min(r[0] for r in runs[n])
+            # each cluster run against the pool run right after it
+            paired = _median(d[0] / p[0] for d, p in zip(runs[("dask", n)],
+                                                         runs[n][-repeats:]))
             rows.append((f"`contact run --quiet --scheduler` (LocalCluster, {n} worker "
-                         f"processes){failed(rc)}", t, f"{t / pool:.2f}x --jobs {n}; {busy}",
-                         "<= 1.15x" + (" PASS" if t / pool <= 1.15 else " FAIL")))
+                         f"processes){failed(rc)}", t,
+                         f"{paired:.2f}x --jobs {n} run in turns with it (median of "
+                         f"{repeats}); {busy}",
+                         "<= 1.15x" + (" PASS" if paired <= 1.15 else " FAIL")))
     return rows
+
+
+def _median(values) -> float:
+    """The median of an iterable of numbers."""
+    return float(np.median(list(values)))
 
 
 def _children_cpu_s() -> float:
