@@ -570,7 +570,8 @@ def main(argv=None):
              "Sweeps of a cylindrical punch (speed x friction; ends, exponents, SIFs) on "
              f"{cores} cores; wall times; `contact run` on {side * side} cases.", "",
              "| run | wall [s] | ratio | target |", "|---|---|---|---|"]
-    lines += [f"| {r} | {t:.2f} | {ratio} | {target} |" for r, t, ratio, target in rows]
+    lines += [f"| {r} | {'' if math.isnan(t) else f'{t:.2f}'} | {ratio} | {target} |"
+              for r, t, ratio, target in rows]
     text = "\n".join(lines) + "\n"
     (OUT / ("bench_sweep_cli.md" if cli_only else "bench_sweep.md")).write_text(text)
     print(text)
