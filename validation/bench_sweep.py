@@ -333,15 +333,14 @@ def processes_alone(text, cases=CEILING_CASES):
         solved = 10 * length
 
         def alone(n):
-            pipes, procs = [], []
-            for _ in range(n):
-                recv, send = ctx.Pipe(duplex=False)
-                procs.append(ctx.Process(target=_solve_alone,
-                                         args=(fn, scene, ranges, chunk, send)))
-                pipes.append(recv)
+            pipes = [ctx.Pipe(duplex=False) for _ in range(n)]
+            procs = [ctx.Process(target=_solve_alone, args=(fn, scene, ranges, chunk, send))
+                     for _, send in pipes]
             for proc in procs:
                 proc.start()
-            walls = [pipe.recv() for pipe in pipes]
+            for _, send in pipes:           # a child that dies is then an EOFError here
+                send.close()
+            walls = [recv.recv() for recv, _ in pipes]
             for proc in procs:
                 proc.join()
             return sum(solved / w for w in walls), max(walls) / min(walls)
