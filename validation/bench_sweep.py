@@ -352,7 +352,7 @@ def processes_alone(text, cases=CEILING_CASES):
 
 #: Cases of ``contact run``'s timed sweep per core of the machine, 1e5 at least: its start-up
 #: (imports, numba loading its cached kernels: ~0.6 s on the 2-core VM, 1.1-1.5 s on a
-#: 16-core gVisor sandbox whose file reads are slow) runs on one core, and N workers can
+#: 16-core gVisor sandbox) runs on one core, and N workers can
 #: reach 0.8 N only where the parallel work is at least 4 N - 5 times the start-up (Amdahl).
 CLI_CASES_PER_CORE = 50_000
 
