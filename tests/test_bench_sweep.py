@@ -78,8 +78,20 @@ def test_processes_alone_count_what_each_solved():
 
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],
-                                  ["--cli", "--repeats", "two"]])
-def test_a_bad_repeat_count_is_refused_before_any_run(argv, capsys):
+                                  ["--cli", "--repeats", "two"], ["--cli", "--counts", "0,2"],
+                                  ["--cli", "--counts", "2,x"], ["--cli", "--counts", ""]])
+def test_a_bad_repeat_count_or_pool_size_is_refused_before_any_run(argv, capsys):
     with pytest.raises(SystemExit) as exc:
         bench_sweep.main(argv)
-    assert exc.value.code == 2 and "--repeats" in capsys.readouterr().err
+    assert exc.value.code == 2 and argv[1] in capsys.readouterr().err
+
+
+def test_the_pool_sizes_asked_are_timed_and_one_besides():
+    """--counts 2: --jobs 1 (the reference) and --jobs 2, and the cluster of 2 paired with
+    the pool of 2; none of the other default sizes."""
+    rows = bench_sweep.cli_rows(6, 6, repeats=1, counts=[2])
+    names = [name for name, *_ in rows]
+    assert [n for n in names if n.startswith("`contact run --quiet --jobs")] == \
+        ["`contact run --quiet --jobs 1`", "`contact run --quiet --jobs 2`"]
+    assert sum("LocalCluster, 2 worker" in n for n in names) == 1
+    assert not [n for n in names if "FAILED" in n], names

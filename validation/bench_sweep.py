@@ -363,7 +363,7 @@ def cli_side(cores: int) -> int:
     return math.isqrt(max(100_000, CLI_CASES_PER_CORE * cores))
 
 
-def cli_rows(n_speed, n_friction, repeats=3):
+def cli_rows(n_speed, n_friction, repeats=3, counts=None):
     """``contact run --quiet --jobs N`` end to end (a fresh process: start-up, solving and
     writing result.json and sweep.csv), the best of ``repeats`` runs, for N up to the
     machine's cores, against ``--jobs 1``: what a user of the command sees, and the issue's
@@ -376,7 +376,11 @@ def cli_rows(n_speed, n_friction, repeats=3):
     (:func:`processes_alone`), and the run's rate is given as a share of theirs: what the
     pool and the command's start-up and writing cost, on a machine whose speed drifts
     between runs (the 16-core machine's did by up to 1.5x over minutes).  Each row gives the
-    CPU time of the run's processes together and how much of N cores it kept busy."""
+    CPU time of the run's processes together and how much of N cores it kept busy.
+
+    ``counts``: the pool sizes N to time (1, the reference, always; the clusters are of the
+    largest and of 2 where timed); None: 1, 2, 4, 8, 16 and the machine's cores, up to
+    them."""
     cores = os.cpu_count() or 1
     rows, runs = [], {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -408,7 +412,9 @@ def cli_rows(n_speed, n_friction, repeats=3):
 
         def failed(rc):
             return "" if rc == 0 else f" (FAILED: exit status {rc})"
-        counts = sorted({1, 2, 4, 8, 16, cores} & set(range(1, cores + 1)))
+        if counts is None:
+            counts = {1, 2, 4, 8, 16, cores} & set(range(1, cores + 1))
+        counts = sorted(set(counts) | {1})
         solo = {}                       # N -> [(rate, spread) of N processes alone]
         with processes_alone(sweep_toml(n_speed, n_friction)) as alone:
             for _ in range(repeats):
@@ -446,7 +452,7 @@ def cli_rows(n_speed, n_friction, repeats=3):
         # a cluster of one worker has no pool to be held to (--jobs 1 solves in the process
         # itself); the API rows (scaling_rows) measure it against a pool of one.  The
         # cluster of all cores first: the row a machine of many cores is run for
-        for n in sorted({2, cores} & set(range(2, cores + 1)), reverse=True):
+        for n in sorted({2, max(counts)} & set(counts) - {1}, reverse=True):
             with local_cluster(n) as cl:
                 address = ("--scheduler", cl.scheduler_address)
                 run(address, small)                     # the workers import and load kernels
@@ -532,11 +538,25 @@ def memory_rows(jobs=0):
     return rows
 
 
+def _pool_sizes(text: str) -> list:
+    """``--counts``: comma-separated pool sizes, each at least 1."""
+    import argparse
+    try:
+        sizes = [int(v) for v in text.split(",")]
+    except ValueError:
+        sizes = []
+    if not sizes or min(sizes) < 1:
+        raise argparse.ArgumentTypeError(
+            f"expected pool sizes of at least 1, comma-separated (e.g. 1,8,16), got {text!r}")
+    return sizes
+
+
 def main(argv=None):
     """``--quick``: every configuration on small sweeps (the timings mean little);
     ``--cli``: the ``contact run`` rows alone (:func:`cli_rows`, on :func:`cli_side` of the
     machine's cores), written to bench_sweep_cli.md: the table of a machine with many cores;
-    ``--repeats N``: the best of N runs of each ``contact run`` (default 3)."""
+    ``--repeats N``: the best of N runs of each ``contact run`` (default 3); ``--counts
+    1,8,16``: the pool sizes timed (a machine's table in fewer minutes)."""
     import argparse
     from contact.scene import parse_scene_text
     parser = argparse.ArgumentParser(prog="python -m validation.bench_sweep",
@@ -545,6 +565,9 @@ def main(argv=None):
     parser.add_argument("--cli", action="store_true", help="the contact run rows alone")
     parser.add_argument("--repeats", type=int, default=3,
                         help="runs of each contact run configuration, the best counts")
+    parser.add_argument("--counts", type=_pool_sizes, default=None,
+                        help="the --jobs N to time, comma-separated (1 is always timed); "
+                             "default: 1, 2, 4, 8, 16 and the machine's cores, up to them")
     args = parser.parse_args(sys.argv[1:] if argv is None else argv)
     if args.repeats < 1:
         parser.error(f"--repeats must be at least 1, got {args.repeats}")
@@ -563,7 +586,7 @@ def main(argv=None):
                                                          20 if quick else 316),
                                               source="<bench sweep 1e5>"))
     side = 20 if quick else cli_side(cores)
-    rows += cli_rows(side, side, repeats)
+    rows += cli_rows(side, side, repeats, args.counts)
     if not (quick or cli_only):
         rows += memory_rows()
     lines = ["# sweep benchmarks", "",
