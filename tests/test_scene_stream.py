@@ -13,12 +13,16 @@ import contextlib
 import csv
 import itertools
 import json
+import os
+import subprocess
+import sys
 import textwrap
 import threading
 import time
 import tracemalloc
 from collections import namedtuple
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -36,6 +40,7 @@ try:
 except ImportError:  # tests/ imported as a package
     from tests.cli_helpers import run_cli
 
+ROOT = Path(__file__).resolve().parents[1]
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
 
 #: Flat punch, two widths x two speeds x two frictions (8 cases): every kind of field, the
@@ -371,12 +376,11 @@ def traced_peak(fn):
         tracemalloc.stop()
 
 
-def test_memory_does_not_grow_with_the_sweep(tmp_path, monkeypatch):
-    """Keeping the results, as run_scene does, costs ~1.7 kB per case: ~500 kB more at 4N
-    cases than at N.  Streaming them into the writers (the scenes, and their lists of swept
-    values, made beforehand; the results of one chunk, at most SERIAL_CHUNK, held at a time)
-    peaks less than a tenth of that higher at 4N: ~20 kB measured, what the allocators and
-    the file buffers move; a result kept per case would show as 1.7 kB a case."""
+def memory_peaks(tmp_path) -> tuple:
+    """(streamed N, streamed 4N, kept N, kept 4N): the peaks traced while N = 100 and 400
+    cases are streamed into a SceneWriter (the lower of two runs each: numpy's and Python's
+    allocators move the peak of identical runs by ~10 kB) and kept by run_scene, after a
+    warm-up run (imports, the solver's caches)."""
     def streamed(s):
         run = iter_scene(s)
         with SceneWriter(s, tmp_path / f"out{s.case_count}", s.case_count,
@@ -384,19 +388,45 @@ def test_memory_does_not_grow_with_the_sweep(tmp_path, monkeypatch):
             for res in run:
                 writer.add(res)
             writer.finish(run.timing_s, run.warnings)
-    monkeypatch.setattr(batch, "SERIAL_CHUNK", 25)     # results held at once: at most this
     n = 100
     few, many = load_sweep(n), load_sweep(4 * n)
-    streamed(many)                                  # warm: imports, the solver's caches
-    # the lower of two runs each: numpy's and Python's allocators move the peak of
-    # identical runs by ~10 kB
+    streamed(many)
     small = min(traced_peak(lambda: streamed(few)) for _ in range(2))
     large = min(traced_peak(lambda: streamed(many)) for _ in range(2))
     rows = read_csv(tmp_path / f"out{4 * n}" / "sweep.csv")
     assert len(rows) == 4 * n + 1 and rows[-1][0] == str(4 * n - 1)
-    kept_small = traced_peak(lambda: run_scene(few))
-    kept_large = traced_peak(lambda: run_scene(many))
-    assert kept_large - kept_small > 300 * n                # the measure sees growth
+    return small, large, traced_peak(lambda: run_scene(few)), traced_peak(lambda: run_scene(many))
+
+
+#: memory_peaks in a fresh interpreter, SERIAL_CHUNK = 25 (results held at once: at most this)
+_PEAKS_CHILD = """
+import json, sys
+from pathlib import Path
+sys.path[:0] = [sys.argv[1]]
+from contact.scene import batch
+batch.SERIAL_CHUNK = 25
+from test_scene_stream import memory_peaks
+print(json.dumps(memory_peaks(Path(sys.argv[2]))))
+"""
+
+
+def test_memory_does_not_grow_with_the_sweep(tmp_path):
+    """Keeping the results, as run_scene does, costs ~1.7 kB per case: ~500 kB more at 4N
+    cases than at N.  Streaming them into the writers (the scenes, and their lists of swept
+    values, made beforehand; the results of one chunk, at most SERIAL_CHUNK, held at a time)
+    peaks less than a tenth of that higher at 4N: ~25 kB measured, what the allocators and
+    the file buffers move; a result kept per case would show as 1.7 kB a case.  Measured in
+    a fresh interpreter: in the one running the whole suite, what other tests left behind
+    (threads of a Dask cluster, caches, the collector's state) moved both streamed peaks by
+    70-130 kB once."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    proc = subprocess.run([sys.executable, "-c", _PEAKS_CHILD, str(ROOT / "tests"),
+                           str(tmp_path)], env=env, capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    small, large, kept_small, kept_large = json.loads(proc.stdout.splitlines()[-1])
+    assert kept_large - kept_small > 300 * 100              # the measure sees growth
     assert large - small < 0.1 * (kept_large - kept_small), (small, large, kept_small,
                                                              kept_large)
 
