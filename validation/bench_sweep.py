@@ -39,6 +39,7 @@ import math
 import os
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -300,7 +301,7 @@ def processes_alone(text, cases=CEILING_CASES):
 
     The n processes, forked from this one (warm), each solve the same ``cases`` cases of the
     sweep of TOML ``text`` (ten stretches spread over it, so that they mix its inputs as the
-    whole sweep does) in chunks of ``TARGET_CHUNK_S`` of work,
+    whole sweep does) in chunks sized as a pool's (:func:`contact.scene.batch.chunk_size`),
     with the chunk function of ``contact run`` (each case encoded as its writers want it),
     nothing passing between them or to a parent: what a pool's workers do, less the pool.
     Their rate is the sum of each one's cases / wall.  On a machine that runs n busy
@@ -311,7 +312,7 @@ def processes_alone(text, cases=CEILING_CASES):
     import functools
     import multiprocessing as mp
     from contact.scene import SceneWriter, parse_scene_text
-    from contact.scene.batch import TARGET_CHUNK_S, run_range
+    from contact.scene.batch import chunk_size, run_range
     from contact.scene.run import _solved_and_encoded
     if "fork" not in mp.get_all_start_methods():
         yield None
@@ -324,9 +325,9 @@ def processes_alone(text, cases=CEILING_CASES):
         fn = functools.partial(_solved_and_encoded, writer.encoder())
         run_range(fn, scene, 0, 64)                             # warm this process
         per_case = run_range(fn, scene, 64, 320).seconds / 256
-        chunk = max(1, int(TARGET_CHUNK_S / per_case))
-        # ten stretches spread over the sweep: its mix of speeds and frictions
         total = scene.case_count
+        chunk = chunk_size(total, 1, per_case)          # as a pool sizes its chunks
+        # ten stretches spread over the sweep: its mix of speeds and frictions
         length = max(1, min(cases, total) // 10)
         ranges = [(k * (total - length) // 9, k * (total - length) // 9 + length)
                   for k in range(10)]
@@ -430,7 +431,7 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
             # the run's rate against that of N processes solving alone just before it
             of = ""
             if jobs in solo:
-                share = _median(cases / r[0] / rate
+                share = statistics.median(cases / r[0] / rate
                                 for r, (rate, _) in zip(runs[jobs], solo[jobs]))
                 of = f" ({share:.0%} of the rate of {jobs} process(es) solving alone just before)"
             rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
@@ -461,7 +462,7 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
                     runs[n].append(run(("--jobs", str(n))))
             t, rc, busy = best(("dask", n), n)
             # each cluster run against the pool run right after it
-            paired = _median(d[0] / p[0] for d, p in zip(runs[("dask", n)],
+            paired = statistics.median(d[0] / p[0] for d, p in zip(runs[("dask", n)],
                                                          runs[n][-repeats:]))
             rows.append((f"`contact run --quiet --scheduler` (LocalCluster, {n} worker "
                          f"processes){failed(rc)}", t,
@@ -469,11 +470,6 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
                          f"{repeats}); {busy}",
                          "<= 1.15x" + (" PASS" if paired <= 1.15 else " FAIL")))
     return rows
-
-
-def _median(values) -> float:
-    """The median of an iterable of numbers."""
-    return float(np.median(list(values)))
 
 
 def _children_cpu_s() -> float:
