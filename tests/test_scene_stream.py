@@ -26,6 +26,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import contact
 from contact.scene import (CaseError, CaseResult, CaseText, SceneWriter, format_table,
@@ -33,7 +35,7 @@ from contact.scene import (CaseError, CaseResult, CaseText, SceneWriter, format_
 from contact.scene import batch, output
 from contact.scene import run as run_module
 from contact.scene.output import dumps_json
-from contact.scene.summary import TABLE_ROWS
+from contact.scene.summary import TABLE_ROWS, table_cell
 
 try:
     from cli_helpers import run_cli
@@ -255,6 +257,64 @@ def test_long_sweep_prints_its_first_and_last_cases_and_extremes():
     assert body[-2][col] == f"{min(x_left):.10g}" and body[-1][col] == f"{max(x_left):.10g}"
     assert f"(20 of {n} cases not shown" in lines[header + TABLE_ROWS + 4]
     assert lines[-1].startswith(f"  total time {result.timing_s:.3f} s for {n} case(s)")
+
+
+def test_long_sweep_min_and_max_are_each_columns_extreme_printed_values():
+    """The min and max rows of a long sweep: for each column, the smallest and largest value
+    printed in it over every case, taken here from the case entries and formatted as the
+    table prints them (exponents to 8 significant digits, SIFs and stresses 6; the flat
+    punch's ends do not move, the cylinder's are checked above)."""
+    n = TABLE_ROWS + 8
+    speeds = ", ".join(repr(0.9 * k / n) for k in range(n))
+    result = run_scene(parse_scene_text(textwrap.dedent(f"""
+        [material]
+        preset = "zhou2014"
+        [punch]
+        kind = "flat"
+        half_width = 1.0
+        [motion]
+        load = 0.01
+        speed = [{speeds}]
+        friction = 0.3
+        [outputs]
+        fields = ["ends", "exponents", "pressure", "sigma_xx", "sif"]
+        x = {{ start = -2.0, stop = 2.0, num = 81 }}
+        """)))
+    entries = [res.entry for res in result.cases]
+    printed = {
+        "alpha": [f"{e['exponents']['right']:.8g}" for e in entries],
+        "beta": [f"{e['exponents']['left']:.8g}" for e in entries],
+        "K_left": [f"{e['sif']['left']:.6g}" for e in entries],
+        "K_right": [f"{e['sif']['right']:.6g}" for e in entries],
+        "max p (sampled)": [f"{np.nanmax(e['pressure']['values']):.6g}" for e in entries],
+        "min sigma_xx": [f"{np.nanmin(e['sigma_xx']['values']):.6g}" for e in entries],
+        "max sigma_xx": [f"{np.nanmax(e['sigma_xx']['values']):.6g}" for e in entries]}
+    lines = format_table(result).splitlines()
+    header = next(k for k, line in enumerate(lines) if line.split()[:1] == ["case"])
+    # the column names hold spaces: cells are found by where their column ends
+    ends = {name: lines[header].index(name) + len(name) for name in printed}
+
+    def cell(line, name):
+        return line[:ends[name]].split()[-1]
+    lowest, highest = lines[header + TABLE_ROWS + 2], lines[header + TABLE_ROWS + 3]
+    assert lowest.split()[0] == "min" and highest.split()[0] == "max"
+    for name, cells in printed.items():
+        values = [float(c) for c in cells]
+        assert len(set(values)) > 1, name                     # a column that varies
+        assert cell(lowest, name) == cells[int(np.argmin(values))], name
+        assert cell(highest, name) == cells[int(np.argmax(values))], name
+
+
+@settings(max_examples=300, deadline=None)
+@given(a=st.floats(allow_nan=False, allow_infinity=False),
+       b=st.floats(allow_nan=False, allow_infinity=False),
+       column=st.sampled_from(["x_left", "alpha", "K_right", "max p (sampled)", "check",
+                               "time ms", "speed"]))
+def test_printed_cells_round_monotonically(a, b, column):
+    """A column's min and max are taken over its raw numbers and then printed: right only
+    because every cell's format rounds monotonically (a <= b: cell(a) reads <= cell(b))."""
+    lo, hi = sorted((a, b))
+    assert float(table_cell(column, lo)) <= float(table_cell(column, hi))
 
 
 def test_long_sweep_table_from_the_workers_texts_is_the_same(tmp_path):

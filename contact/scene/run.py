@@ -95,8 +95,8 @@ class CaseText(NamedTuple):
     single_zone_row: str | None
     #: How many contact zones it has.
     zones: int
-    #: Its row of the printed table, (columns, cells, values), or None when not made
-    #: (:meth:`contact.scene.summary.TableRows.columns`).
+    #: Its row of the printed table, (columns, the raw number of each cell), or None when
+    #: not made (:meth:`contact.scene.summary.TableRows.columns`).
     table_row: tuple | None = None
 
 

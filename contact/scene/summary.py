@@ -62,28 +62,30 @@ class TableSummary:
 
     def add_all(self, results) -> None:
         """The next cases, in scene order: CaseResult, or CaseText carrying its row
-        (:class:`contact.scene.output.CaseEncoder` with ``table=True``).  Their rows are
-        taken a column at a time: each column's extremes are the min and max over it (a
-        cell at a time, this took ~7 us a case in the process that writes a sweep)."""
-        by_columns = {}                     # a row's columns -> its cases' (cells, values)
+        (:class:`contact.scene.output.CaseEncoder` with ``table=True``).  Rows come as
+        their columns' raw numbers (:meth:`TableRows.columns`) and are taken a column at a
+        time: a column's extremes are the min and max of its finite numbers, and only the
+        cells shown are formatted (:func:`table_cell`; formatting every cell of every case
+        cost a worker ~9 us a case)."""
+        by_columns = {}                     # a row's columns -> its cases' raw numbers
         zones = []
         for res in results:
             if type(res) is CaseText:
-                keys, cells, values = res.table_row
+                keys, raw = res.table_row
                 zones.append(res.zones)
                 if self._first_inputs is None:
                     self._first_inputs = self.scene.case(res.index).inputs
             else:
-                keys, cells, values = self.rows.columns(res)
+                keys, raw = self.rows.columns(res)
                 zones.append(len(res.zones))
                 if self._first_inputs is None:
                     self._first_inputs = res.entry["inputs"]
                 self._cut |= _cut_below_surface(res.entry)   # a text has no map: never cut
-            by_columns.setdefault(keys, []).append((cells, values))
+            by_columns.setdefault(keys, []).append(raw)
             if self._added < TABLE_ROWS // 2 or self.count <= TABLE_ROWS:
-                self._head.append(dict(zip(keys, cells)))
+                self._head.append((keys, raw))
             else:
-                self._tail.append((keys, cells))
+                self._tail.append((keys, raw))
             self._added += 1
         if not zones:
             return
@@ -91,20 +93,20 @@ class TableSummary:
         self._several_zones |= max(zones) > 1
         for keys, rows in by_columns.items():
             self._columns.update(dict.fromkeys(keys))
-            cell_columns = zip(*(cells for cells, _ in rows))
-            value_columns = zip(*(values for _, values in rows))
-            for key, cells, values in zip(keys, cell_columns, value_columns):
-                if key in ("K_left", "K_right") and "-" in cells:
+            for key, column in zip(keys, zip(*rows)):
+                if key in ("K_left", "K_right") and None in column:
                     self._free_end = True
-                numbers = [(v, c) for v, c in zip(values, cells) if v is not None]
+                if key in _UNRANKED:
+                    continue
+                numbers = [v for v in column if isinstance(v, (int, float)) and math.isfinite(v)]
                 if numbers:
                     self._extremes(key, min(numbers), max(numbers))
 
-    def _extremes(self, key: str, lowest: tuple, highest: tuple) -> None:
-        """Keep a column's smallest and largest (value, cell) over the cases so far."""
-        if key not in self._lowest or lowest[0] < self._lowest[key][0]:
+    def _extremes(self, key: str, lowest, highest) -> None:
+        """Keep a column's smallest and largest number over the cases so far."""
+        if key not in self._lowest or lowest < self._lowest[key]:
             self._lowest[key] = lowest
-        if key not in self._highest or highest[0] > self._highest[key][0]:
+        if key not in self._highest or highest > self._highest[key]:
             self._highest[key] = highest
 
     def text(self, timing_s: float) -> str:
@@ -124,17 +126,18 @@ class TableSummary:
         omitted = self._added - len(self._head) - len(self._tail)
         extremes = []
         if omitted:
-            extremes = [{"case": "min", **{k: c for k, (_, c) in self._lowest.items()}},
-                        {"case": "max", **{k: c for k, (_, c) in self._highest.items()}}]
-        tail = [dict(zip(keys, cells)) for keys, cells in self._tail]
-        shown = self._head + tail + extremes
+            extremes = [{"case": "min", **_cells(self._lowest, self._lowest.values())},
+                        {"case": "max", **_cells(self._highest, self._highest.values())}]
+        first = [_cells(keys, raw) for keys, raw in self._head]
+        tail = [_cells(keys, raw) for keys, raw in self._tail]
+        shown = first + tail + extremes
         widths = {k: max(len(k), *(len(r.get(k, "")) for r in shown)) for k in columns}
 
         def line(row):
             return "  " + "  ".join(f"{row.get(k, ''):>{widths[k]}}" for k in columns)
 
         lines = head + ["", "  " + "  ".join(f"{k:>{widths[k]}}" for k in columns)]
-        lines += [line(r) for r in self._head]
+        lines += [line(r) for r in first]
         if omitted:
             lines.append(line({"case": "..."}).rstrip())
             lines += [line(r) for r in tail + extremes]
@@ -174,43 +177,62 @@ class TableRows:
                        "exponents" in scene.fields, "sif" in scene.fields)
 
     def columns(self, res: CaseResult) -> tuple:
-        """(columns, cells, values) of a case's row: the cells as printed, and the number
-        each reads as where it is a finite one (None elsewhere, and in ``case``): what the
-        column's extremes are taken from."""
+        """(columns, raw) of a case's row: the names of its columns and the number each
+        cell is formatted from (:func:`table_cell`), None for a cell without one (a free
+        end's SIF, a field without a finite value), a pair for ``max shear @ depth/a``."""
         row = _table_row(res, self.swept, self._outer)
-        return tuple(row), tuple(row.values()), tuple(_cell_value(k, c) for k, c in row.items())
+        return tuple(row), tuple(row.values())
 
 
-def _cell_value(key: str, cell: str) -> float | None:
-    """The number a printed cell reads as, if a finite one (not the case's index)."""
-    if key == "case":
-        return None
-    try:
-        value = float(cell)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
+def _fixed(digits: int):
+    """A cell of ``digits`` significant digits (``%g``), "-" without a number."""
+    spec = f".{digits}g"
+    return lambda v: "-" if v is None else format(v, spec)
+
+
+#: How a column's raw number is printed (:func:`table_cell`); any other column is a swept
+#: input (:func:`contact.scene.spec._fmt`).
+_CELLS = {"case": str, "zones": str,
+          "x_left": _fixed(10), "x_right": _fixed(10), "alpha": _fixed(8), "beta": _fixed(8),
+          "K_left": _fixed(6), "K_right": _fixed(6), "max p (sampled)": _fixed(6),
+          "min sigma_xx": _fixed(6), "max sigma_xx": _fixed(6),
+          "max shear @ depth/a": lambda v: f"{v[0]:.4g} @ {v[1]:.4g}",
+          "check": lambda v: f"{v:.1e}", "time ms": lambda v: f"{v:.1f}"}
+#: Columns without extremes: the case's index, and a cell of two numbers.
+_UNRANKED = frozenset(("case", "max shear @ depth/a"))
+
+
+def table_cell(key: str, raw) -> str:
+    """The printed cell of column ``key`` holding ``raw`` (:meth:`TableRows.columns`).
+    Each format rounds monotonically, so that the cell of a column's smallest raw number is
+    its smallest printed value (what :class:`TableSummary` shows as the column's min)."""
+    return _CELLS.get(key, _fmt)(raw)
+
+
+def _cells(keys: tuple, raw: tuple) -> dict:
+    """A row's printed cells by column."""
+    return {k: table_cell(k, v) for k, v in zip(keys, raw)}
 
 
 def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
-    """A case's cells in the printed table (the ``zones`` column always: the table drops it
-    when every case has one zone)."""
+    """A case's raw numbers in the printed table, by column (the ``zones`` column always:
+    the table drops it when every case has one zone)."""
     e = res.entry
-    row = {"case": str(res.index)}
-    row.update({k: _fmt(e["inputs"][k]) for k in swept})
-    row["zones"] = str(len(res.zones))
+    row = {"case": res.index}
+    inputs = e["inputs"]
+    row.update({k: inputs[k] for k in swept})
+    row["zones"] = len(res.zones)
     zones = e.get("zones") if len(res.zones) > 1 else None
     if "ends" in e:
-        row["x_left"], row["x_right"] = (f"{x:.10g}" for x in e["ends"])
+        row["x_left"], row["x_right"] = e["ends"]
     elif zones and outer[0]:
-        row["x_left"], row["x_right"] = (f"{x:.10g}" for x in
-                                         (zones[0]["ends"][0], zones[-1]["ends"][1]))
+        row["x_left"], row["x_right"] = zones[0]["ends"][0], zones[-1]["ends"][1]
     if "exponents" in e:
-        row["alpha"] = f"{e['exponents']['right']:.8g}"
-        row["beta"] = f"{e['exponents']['left']:.8g}"
+        row["alpha"] = e["exponents"]["right"]
+        row["beta"] = e["exponents"]["left"]
     elif zones and outer[1]:
-        row["alpha"] = f"{zones[-1]['exponents']['right']:.8g}"
-        row["beta"] = f"{zones[0]['exponents']['left']:.8g}"
+        row["alpha"] = zones[-1]["exponents"]["right"]
+        row["beta"] = zones[0]["exponents"]["left"]
     if "pressure" in e:
         row["max p (sampled)"] = _extreme(e["pressure"]["values"], np.nanmax)
     sif = e.get("sif")
@@ -218,18 +240,18 @@ def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
         sif = {k: v for k, v in (("left", zones[0]["sif"].get("left")),
                                  ("right", zones[-1]["sif"].get("right"))) if v is not None}
     if sif is not None:
-        row["K_left"] = f"{sif['left']:.6g}" if "left" in sif else "-"
-        row["K_right"] = f"{sif['right']:.6g}" if "right" in sif else "-"
+        row["K_left"] = sif.get("left")
+        row["K_right"] = sif.get("right")
     if "sigma_xx" in e:
         row["min sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmin)
         row["max sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmax)
     if "subsurface" in e:
         ms = e["subsurface"]["max_shear"]
-        row["max shear @ depth/a"] = f"{ms['value']:.4g} @ {ms['depth_over_a']:.4g}"
+        row["max shear @ depth/a"] = (ms["value"], ms["depth_over_a"])
     if res.diagnostics:
         d = res.diagnostics
-        row["check"] = f"{max(d['residual'], d['load_check']):.1e}"
-    row["time ms"] = f"{1e3 * res.time_s:.1f}"
+        row["check"] = max(d["residual"], d["load_check"])
+    row["time ms"] = 1e3 * res.time_s
     return row
 
 
@@ -246,8 +268,9 @@ def _fixed_inputs(scene: Scene, first: dict) -> dict:
             if k not in swept and not (k == "speed" and "velocity" in swept)}
 
 
-def _extreme(values, fn) -> str:
+def _extreme(values, fn) -> float | None:
+    """fn (np.nanmax or np.nanmin) of a sampled field, None without a finite sample."""
     v = np.asarray(values, dtype=float)
     if not np.any(np.isfinite(v)):
-        return "-"
-    return f"{fn(v) + 0.0:.6g}"
+        return None
+    return float(fn(v)) + 0.0
