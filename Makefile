@@ -15,6 +15,7 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e ".[test]"
 	$(PY) -m sie.warmup    # compile the numba kernels into the on-disk cache once
+	$(PY) -m compileall -q sie contact    # bytecode, as pip writes it for an installed package
 	touch $(STAMP)
 
 run: $(STAMP)
