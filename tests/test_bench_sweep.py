@@ -48,6 +48,15 @@ def test_every_configuration_runs_and_agrees_with_serial():
     assert all("to the first chunk" in ratio and "?" not in ratio for ratio in cli), cli
 
 
+def test_in_process_rows_time_the_solve_the_scene_and_the_writers_text():
+    scene = parse_scene_text(bench_sweep.sweep_toml(6, 5), source="<bench smoke>")
+    rows = bench_sweep.in_process_rows(scene)
+    names = [name for name, *_ in rows]
+    assert names[0] == "30 cases, serial, in process"
+    assert sum("contact run adds where a case is solved" in n for n in names) == 2
+    assert all(ratio.endswith("us a case") or "us a case," in ratio for _, _, ratio, _ in rows)
+
+
 def test_phases_of_a_run_add_up_to_its_wall_time():
     """phase_text: the marks of _TIMED_CONTACT_RUN as consecutive intervals that add up to
     the wall time; a phase whose mark is missing (a run that failed before it) is '?'."""

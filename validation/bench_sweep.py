@@ -122,7 +122,7 @@ def in_process_rows(scene):
     return [(f"{scene.case_count} cases, serial, in process", t1,
              f"{per_case * 1e6:.0f} us a case",
              "1e4 cases < 1 s" + (" PASS" if t1 * 1e4 / scene.case_count < 1.0 else " FAIL"))
-            ] + breakdown_rows(scene)
+            ] + breakdown_rows(scene) + encoding_rows(scene)
 
 
 def scaling_rows(scene):
@@ -191,6 +191,27 @@ def breakdown_rows(scene):
              ("the scene (cases, chunks, entries)", t_scene - t_both)]
     return [(f"  of which {name}", t, f"{t / n * 1e6:.0f} us a case, {t / t_scene:.0%}", "")
             for name, t in parts]
+
+
+def encoding_rows(scene):
+    """What ``contact run`` adds to each case where it is solved
+    (:class:`contact.scene.output.CaseEncoder`): its result.json entry and sweep.csv rows
+    as text, and without ``--quiet`` its row of the printed table, each timed on the scene's
+    results, in turns ``REPEATS`` times (the fastest counts)."""
+    from contact.scene import run_scene
+    from contact.scene.output import CaseEncoder
+    results = run_scene(scene).cases
+    texts = CaseEncoder(scene, lean=True)
+    rows = CaseEncoder(scene, lean=True, table=True)
+    best = [math.inf] * 2
+    for _ in range(REPEATS):
+        for k, encode in enumerate((texts, rows)):
+            best[k] = min(best[k], _timed(lambda: [encode(r) for r in results], 1)[0])
+    n = len(results)
+    parts = [("its result.json entry and sweep.csv rows", best[0]),
+             ("its row of the printed table (without --quiet)", best[1] - best[0])]
+    return [(f"  contact run adds where a case is solved: {name}", t,
+             f"{t / n * 1e6:.1f} us a case", "") for name, t in parts]
 
 
 def _contact_run(path, out, *args, entry=("-m", "contact")) -> list:
