@@ -88,11 +88,19 @@ def test_processes_alone_count_what_each_solved():
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],
                                   ["--cli", "--repeats", "two"], ["--cli", "--counts", "0,2"],
-                                  ["--cli", "--counts", "2,x"], ["--cli", "--counts", ""]])
+                                  ["--cli", "--counts", "2,x"], ["--cli", "--counts", ""],
+                                  ["--cli", "--per-core", "0"], ["--cli", "--per-core", "1e5"]])
 def test_a_bad_repeat_count_or_pool_size_is_refused_before_any_run(argv, capsys):
     with pytest.raises(SystemExit) as exc:
         bench_sweep.main(argv)
     assert exc.value.code == 2 and argv[1] in capsys.readouterr().err
+
+
+def test_the_timed_sweep_has_the_cases_asked_per_core_and_1e5_at_least():
+    assert bench_sweep.cli_side(2) ** 2 == 316 ** 2                  # 99 856: 1e5 cases
+    assert bench_sweep.cli_side(16) == 894                           # 5e4 a core
+    assert bench_sweep.cli_side(16, per_core=200_000) == 1788        # 3.2e6 cases
+    assert bench_sweep.cli_side(16, per_core=1000) == 316
 
 
 def test_the_pool_sizes_asked_are_timed_and_one_besides():

@@ -379,10 +379,10 @@ def processes_alone(text, cases=CEILING_CASES):
 CLI_CASES_PER_CORE = 50_000
 
 
-def cli_side(cores: int) -> int:
+def cli_side(cores: int, per_core: int = CLI_CASES_PER_CORE) -> int:
     """The side of the square speed x friction sweep that ``contact run`` is timed on: 316
-    (1e5 cases) up to 2 cores, ``CLI_CASES_PER_CORE`` cases per core beyond."""
-    return math.isqrt(max(100_000, CLI_CASES_PER_CORE * cores))
+    (1e5 cases) up to 2 cores, ``per_core`` cases per core beyond."""
+    return math.isqrt(max(100_000, per_core * cores))
 
 
 def compile_bytecode() -> None:
@@ -588,7 +588,9 @@ def main(argv=None):
     ``--cli``: the ``contact run`` rows alone (:func:`cli_rows`, on :func:`cli_side` of the
     machine's cores), written to bench_sweep_cli.md: the table of a machine with many cores;
     ``--repeats N``: the best of N runs of each ``contact run`` (default 3); ``--counts
-    1,8,16``: the pool sizes timed (a machine's table in fewer minutes)."""
+    1,8,16``: the pool sizes timed (a machine's table in fewer minutes); ``--per-core N``:
+    the cases of ``contact run``'s sweep per core of the machine (default
+    ``CLI_CASES_PER_CORE``; 1e5 at least): where the one-core start-up stops mattering."""
     import argparse
     from contact.scene import parse_scene_text
     parser = argparse.ArgumentParser(prog="python -m validation.bench_sweep",
@@ -600,9 +602,14 @@ def main(argv=None):
     parser.add_argument("--counts", type=_pool_sizes, default=None,
                         help="the --jobs N to time, comma-separated (1 is always timed); "
                              "default: 1, 2, 4, 8, 16 and the machine's cores, up to them")
+    parser.add_argument("--per-core", type=int, default=CLI_CASES_PER_CORE,
+                        help="cases of the contact run sweep per core of the machine "
+                             f"(default {CLI_CASES_PER_CORE}; 1e5 cases at least)")
     args = parser.parse_args(sys.argv[1:] if argv is None else argv)
     if args.repeats < 1:
         parser.error(f"--repeats must be at least 1, got {args.repeats}")
+    if args.per_core < 1:
+        parser.error(f"--per-core must be at least 1, got {args.per_core}")
     quick, cli_only, repeats = args.quick, args.cli, args.repeats
     OUT.mkdir(parents=True, exist_ok=True)
     cores = os.cpu_count() or 1
@@ -617,7 +624,7 @@ def main(argv=None):
         rows += scaling_rows(parse_scene_text(sweep_toml(20 if quick else 316,
                                                          20 if quick else 316),
                                               source="<bench sweep 1e5>"))
-    side = 20 if quick else cli_side(cores)
+    side = 20 if quick else cli_side(cores, args.per_core)
     rows += cli_rows(side, side, repeats, args.counts)
     if not (quick or cli_only):
         rows += memory_rows()
