@@ -103,6 +103,17 @@ def test_the_timed_sweep_has_the_cases_asked_per_core_and_1e5_at_least():
     assert bench_sweep.cli_side(16, per_core=1000) == 316
 
 
+def test_the_default_run_with_its_table_is_timed_beside_the_quiet_one():
+    rows = bench_sweep.cli_rows(6, 6, repeats=1, counts=[2], printed=True)
+    printed = [(name, ratio) for name, _, ratio, _ in rows if "table printed" in name]
+    assert [name for name, _ in printed] == [
+        "`contact run --jobs 1` (the table printed, the progress bar)",
+        "`contact run --jobs 2` (the table printed, the progress bar)"]
+    assert printed[0][1].startswith("1.00x its --jobs 1, ")
+    assert all("the time with --quiet" in ratio and "to the first chunk" in ratio
+               for _, ratio in printed)
+
+
 def test_the_pool_sizes_asked_are_timed_and_one_besides():
     """--counts 2: --jobs 1 (the reference) and --jobs 2, and the cluster of 2 paired with
     the pool of 2; none of the other default sizes."""

@@ -18,7 +18,8 @@ CPU time each run spent and where its wall time went (imports, to the first chun
 results, the stream of chunks, writing, exit: :data:`_TIMED_CONTACT_RUN`), and the machine's
 own ceiling for N workers: N processes solving the same cases at once with nothing passed
 between them (:func:`processes_alone`), measured just before each ``--jobs N`` run: the
-most any pool could reach there, at that time.  ``python -m
+most any pool could reach there, at that time; and ``--jobs 1`` and ``--jobs N`` as the
+command runs by default, the table printed and the progress bar drawn.  ``python -m
 validation.bench_sweep --cli`` runs these rows alone (bench_sweep_cli.md): the table of a
 machine with many cores.
 
@@ -214,10 +215,12 @@ def encoding_rows(scene):
              f"{t / n * 1e6:.1f} us a case", "") for name, t in parts]
 
 
-def _contact_run(path, out, *args, entry=("-m", "contact")) -> list:
+def _contact_run(path, out, *args, entry=("-m", "contact"), quiet=True) -> list:
     """The command line of ``contact run --quiet ARGS`` on a scene file, in this Python
-    (``entry``: how the interpreter is told to run it, ``python -m contact`` by default)."""
-    return [sys.executable, *entry, "run", str(path), "--out", str(out), "--quiet", *args]
+    (``entry``: how the interpreter is told to run it, ``python -m contact`` by default;
+    ``quiet`` False: without ``--quiet``, the table printed and the progress bar drawn)."""
+    return [sys.executable, *entry, "run", str(path), "--out", str(out),
+            *(("--quiet",) if quiet else ()), *args]
 
 
 #: ``contact run`` as its console script runs it (:func:`contact.cli.console`), with the
@@ -263,9 +266,9 @@ finally:
 """
 
 
-def _timed_contact_run(path, out, *args) -> list:
+def _timed_contact_run(path, out, *args, quiet=True) -> list:
     """The command line of ``contact run --quiet ARGS`` through ``_TIMED_CONTACT_RUN``."""
-    return _contact_run(path, out, *args, entry=("-c", _TIMED_CONTACT_RUN))
+    return _contact_run(path, out, *args, entry=("-c", _TIMED_CONTACT_RUN), quiet=quiet)
 
 
 def _phases(stderr: str) -> dict:
@@ -399,7 +402,7 @@ def compile_bytecode() -> None:
         compileall.compile_dir(Path(package.__file__).parent, quiet=1)
 
 
-def cli_rows(n_speed, n_friction, repeats=3, counts=None):
+def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
     """``contact run --quiet --jobs N`` end to end (a fresh process: start-up, solving and
     writing result.json and sweep.csv), the best of ``repeats`` runs, for N up to the
     machine's cores, against ``--jobs 1``: what a user of the command sees, and the issue's
@@ -416,7 +419,9 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
 
     ``counts``: the pool sizes N to time (1, the reference, always; the clusters are of the
     largest and of 2 where timed); None: 1, 2, 4, 8, 16 and the machine's cores, up to
-    them."""
+    them.  ``printed``: also ``contact run`` as it runs by default, the table printed and
+    the progress bar drawn (without ``--quiet``), ``--jobs 1`` and of the largest count, in
+    turns with the others."""
     cores = os.cpu_count() or 1
     rows, runs = [], {}
     compile_bytecode()
@@ -426,18 +431,19 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
         small.write_text(sweep_toml(20, 20))
         out = Path(tmp) / "out"
 
-        def run(args, scene=path, cluster=None):
+        def run(args, scene=path, cluster=None, quiet=True):
             shutil.rmtree(out, ignore_errors=True)
             before = _children_cpu_s() + _cluster_cpu_s(cluster)
             t0 = time.perf_counter()
-            proc = subprocess.run(_timed_contact_run(scene, out, *args), capture_output=True,
-                                  text=True)
+            proc = subprocess.run(_timed_contact_run(scene, out, *args, quiet=quiet),
+                                  capture_output=True, text=True)
             wall = time.perf_counter() - t0
             cpu = _children_cpu_s() + _cluster_cpu_s(cluster) - before
             phases = phase_text(_phases(proc.stderr), wall)
             # each run as it ends, on stderr: a bench stopped at a time limit still tells
             # what it measured
-            print(f"  {' '.join(args)}{' (small)' if scene is small else ''}: {wall:.2f} s, "
+            print(f"  {' '.join(args)}{' (small)' if scene is small else ''}"
+                  f"{'' if quiet else ' (printed)'}: {wall:.2f} s, "
                   f"CPU {cpu:.1f} s, exit {proc.returncode}; {phases}", file=sys.stderr,
                   flush=True)
             return wall, proc.returncode, cpu, phases
@@ -459,6 +465,9 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
                     if alone is not None:
                         solo.setdefault(jobs, []).append(alone(jobs))
                     runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
+                for jobs in sorted({1, max(counts)}) if printed else ():
+                    runs.setdefault(("printed", jobs), []).append(
+                        run(("--jobs", str(jobs)), quiet=False))
         cases = n_speed * n_friction
         for jobs in counts:
             t, rc, busy = best(jobs, jobs)
@@ -474,6 +483,13 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None):
                          f"{ratio:.2f}x --jobs 1{of}; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
+        for jobs in sorted({1, max(counts)}) if printed else ():
+            t, rc, busy = best(("printed", jobs), jobs)
+            ratio = min(r[0] for r in runs[("printed", 1)]) / t
+            rows.append((f"`contact run --jobs {jobs}` (the table printed, the progress bar)"
+                         f"{failed(rc)}", t, f"{ratio:.2f}x its --jobs 1, "
+                         f"{t / min(r[0] for r in runs[jobs]):.2f}x the time with --quiet; "
+                         f"{busy}", ""))
         if solo:
             one = max(solo[1])[0]
             rows.append((f"the machine's ceiling: N processes solving the same "
@@ -625,7 +641,7 @@ def main(argv=None):
                                                          20 if quick else 316),
                                               source="<bench sweep 1e5>"))
     side = 20 if quick else cli_side(cores, args.per_core)
-    rows += cli_rows(side, side, repeats, args.counts)
+    rows += cli_rows(side, side, repeats, args.counts, printed=not cli_only)
     if not (quick or cli_only):
         rows += memory_rows()
     lines = ["# sweep benchmarks", "",
