@@ -104,6 +104,16 @@ def local_cluster(n):
 REPEATS = 3
 
 
+def _fastest_in_turns(fns, repeats=REPEATS) -> list:
+    """The shortest wall time of each of ``fns``, run in turns ``repeats`` times, so that a
+    slower spell of the machine does not fall on one of them only."""
+    best = [math.inf] * len(fns)
+    for _ in range(repeats):
+        for k, fn in enumerate(fns):
+            best[k] = min(best[k], _timed(fn, 1)[0])
+    return best
+
+
 def _timed(fn, repeats=REPEATS):
     """(the shortest wall time of ``repeats`` calls of fn, the last call's result)."""
     best = math.inf
@@ -181,12 +191,8 @@ def breakdown_rows(scene):
     def solve_all(residual):
         contact.solve_batch(material, punch, residual=residual, **columns)
     from contact.scene import run_scene
-    best = [math.inf] * 3
-    for _ in range(REPEATS):
-        for k, fn in enumerate((lambda: solve_all(False), lambda: solve_all(True),
-                                lambda: run_scene(scene))):
-            best[k] = min(best[k], _timed(fn, 1)[0])
-    t_solve, t_both, t_scene = best
+    t_solve, t_both, t_scene = _fastest_in_turns(
+        (lambda: solve_all(False), lambda: solve_all(True), lambda: run_scene(scene)))
     n = len(cases)
     parts = [("contact.solve_batch", t_solve), ("the residual (diagnostics)", t_both - t_solve),
              ("the scene (cases, chunks, entries)", t_scene - t_both)]
@@ -204,13 +210,11 @@ def encoding_rows(scene):
     results = run_scene(scene).cases
     texts = CaseEncoder(scene, lean=True)
     rows = CaseEncoder(scene, lean=True, table=True)
-    best = [math.inf] * 2
-    for _ in range(REPEATS):
-        for k, encode in enumerate((texts, rows)):
-            best[k] = min(best[k], _timed(lambda: [encode(r) for r in results], 1)[0])
+    t_texts, t_rows = _fastest_in_turns((lambda: [texts(r) for r in results],
+                                         lambda: [rows(r) for r in results]))
     n = len(results)
-    parts = [("its result.json entry and sweep.csv rows", best[0]),
-             ("its row of the printed table (without --quiet)", best[1] - best[0])]
+    parts = [("its result.json entry and sweep.csv rows", t_texts),
+             ("its row of the printed table (without --quiet)", t_rows - t_texts)]
     return [(f"  contact run adds where a case is solved: {name}", t,
              f"{t / n * 1e6:.1f} us a case", "") for name, t in parts]
 
@@ -453,11 +457,15 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
             return wall, rc, (f"CPU {cpu:.1f} s ({cpu / (n * wall):.0%} of {n} core(s)); "
                               f"{phases}")
 
+        def fastest(key):
+            return min(r[0] for r in runs[key])
+
         def failed(rc):
             return "" if rc == 0 else f" (FAILED: exit status {rc})"
         if counts is None:
             counts = {1, 2, 4, 8, 16, cores} & set(range(1, cores + 1))
         counts = sorted(set(counts) | {1})
+        printed_counts = sorted({1, max(counts)}) if printed else []
         solo = {}                       # N -> [(rate, spread) of N processes alone]
         with processes_alone(sweep_toml(n_speed, n_friction)) as alone:
             for _ in range(repeats):
@@ -465,14 +473,14 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
                     if alone is not None:
                         solo.setdefault(jobs, []).append(alone(jobs))
                     runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
-                for jobs in sorted({1, max(counts)}) if printed else ():
+                for jobs in printed_counts:
                     runs.setdefault(("printed", jobs), []).append(
                         run(("--jobs", str(jobs)), quiet=False))
         cases = n_speed * n_friction
         for jobs in counts:
             t, rc, busy = best(jobs, jobs)
             need = 1.7 if jobs == 2 else 0.8 * jobs
-            ratio = min(r[0] for r in runs[1]) / t
+            ratio = fastest(1) / t
             # the run's rate against that of N processes solving alone just before it
             of = ""
             if jobs in solo:
@@ -483,13 +491,11 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
                          f"{ratio:.2f}x --jobs 1{of}; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
                          + (" PASS" if ratio >= need else " FAIL")))
-        for jobs in sorted({1, max(counts)}) if printed else ():
+        for jobs in printed_counts:
             t, rc, busy = best(("printed", jobs), jobs)
-            ratio = min(r[0] for r in runs[("printed", 1)]) / t
             rows.append((f"`contact run --jobs {jobs}` (the table printed, the progress bar)"
-                         f"{failed(rc)}", t, f"{ratio:.2f}x its --jobs 1, "
-                         f"{t / min(r[0] for r in runs[jobs]):.2f}x the time with --quiet; "
-                         f"{busy}", ""))
+                         f"{failed(rc)}", t, f"{fastest(('printed', 1)) / t:.2f}x its --jobs 1, "
+                         f"{t / fastest(jobs):.2f}x the time with --quiet; {busy}", ""))
         if solo:
             one = max(solo[1])[0]
             rows.append((f"the machine's ceiling: N processes solving the same "
