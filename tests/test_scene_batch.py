@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import itertools
 import math
+import os
+import sys
 import time
 from collections import namedtuple
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
@@ -462,3 +464,34 @@ def test_every_case_delivered_when_the_window_empties_at_once(monkeypatch):
     got = list(batch.iter_chunked(indices, fake_cases(100, speeds=(0.0,)),
                                   _InlineExecutor(), lambda k: None))
     assert got == [(i, i) for i in range(100)]
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="F_SETPIPE_SZ is Linux's")
+def test_a_pools_result_pipe_takes_a_whole_chunk_without_a_reader():
+    """Once iter_chunks has run on a process pool, a worker writes a chunk of results of
+    ~0.9 MB into the pool's result pipe in one go, nothing reading it (the default pipe, 64
+    kB, would block it after 64 kB), and the pipe gives back exactly what went in."""
+    import fcntl
+    with ProcessPoolExecutor(2) as ex:
+        got = list(batch.iter_chunked(indices, fake_cases(8), ex, lambda k: None))
+        assert [i for i, _ in got] == list(range(8))
+        reader, writer = ex._result_queue._reader, ex._result_queue._writer
+        assert fcntl.fcntl(reader.fileno(), fcntl.F_GETPIPE_SZ) == batch.widen_result_pipe(ex)
+        if batch.widen_result_pipe(ex) < batch.RESULT_PIPE_BYTES:
+            pytest.skip("this system's pipe-max-size is below RESULT_PIPE_BYTES")
+        message = bytes(range(256)) * (900_000 // 256)
+        os.set_blocking(writer.fileno(), False)
+        try:
+            assert os.write(writer.fileno(), message) == len(message)   # no BlockingIOError
+        finally:
+            os.set_blocking(writer.fileno(), True)
+        back = b""
+        while len(back) < len(message):
+            back += os.read(reader.fileno(), len(message) - len(back))
+        assert back == message
+
+
+def test_only_a_process_pool_has_a_result_pipe_to_widen():
+    assert batch.widen_result_pipe(None) is None
+    with ThreadPoolExecutor(1) as ex:
+        assert batch.widen_result_pipe(ex) is None

@@ -34,7 +34,7 @@ import functools
 import itertools
 import math
 import time
-from concurrent.futures import FIRST_COMPLETED, wait
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
 from contact.solver import cyclic_gc_paused
 
@@ -49,6 +49,10 @@ TAIL_SPLIT = 2
 CHUNKS_AHEAD = 8
 #: Cases solved here first, as one chunk, to size the chunks of an executor.
 _PROBE = 16
+#: Bytes a process pool's result pipe is asked to hold (:func:`widen_result_pipe`): a
+#: chunk's results (~0.75 kB a case of ``contact run``'s encoded text, ``TARGET_CHUNK_S`` of
+#: cases: 1-3 MB) then go in a few writes instead of one per 64 kB.
+RESULT_PIPE_BYTES = 1 << 20
 #: Most cases per chunk without an executor (solved together, delivered in order): a sweep
 #: of any length runs in memory for this many results.
 SERIAL_CHUNK = 256
@@ -176,7 +180,8 @@ def iter_chunks(fn, source, executor, on_done):
     run here as two chunks (the second's time sizes the chunks: :func:`chunk_size`; the
     first warms this process up, and the workers forked after it); the rest
     go to ``executor`` as ranges of indices (:func:`run_range`), at most ``CHUNKS_AHEAD``
-    full chunks per worker past the first case not yet delivered.  Once a case fails, the
+    full chunks per worker past the first case not yet delivered (a process pool's result
+    pipe first widened to hold a chunk: :func:`widen_result_pipe`).  Once a case fails, the
     chunks after it are cancelled and those before it awaited.  ``on_done(k)`` is called as
     k cases finish.
     """
@@ -196,6 +201,7 @@ def iter_chunks(fn, source, executor, on_done):
             start = stop
         return
     workers = worker_count(executor)
+    widen_result_pipe(executor)
     if not _warms_workers(executor):        # each worker warms up on its first chunk
         yield from _windowed(fn, source, executor, 0, total, None, workers, on_done)
         return
@@ -218,6 +224,42 @@ def _ahead(per_case: float) -> int:
     """Chunks per worker handed out past the first case not yet delivered: CHUNKS_AHEAD
     once a case's time is known, one (each worker's first chunk) before."""
     return CHUNKS_AHEAD if math.isfinite(per_case) else 1
+
+
+def widen_result_pipe(executor) -> int | None:
+    """Ask the pipe that a :class:`~concurrent.futures.ProcessPoolExecutor`'s workers send
+    their results through to hold ``RESULT_PIPE_BYTES`` (Linux's ``F_SETPIPE_SZ``, up to
+    ``/proc/sys/fs/pipe-max-size``); its size in bytes, or None where there is no such pipe
+    or its size cannot be set (another platform, another executor).
+
+    A worker writes a chunk's results into the pipe, holding the pool's one write lock, and
+    is blocked until all of it is in: with the default 64 kB, until this process's thread
+    that reads the pipe has taken all but the last 64 kB out, a read at a time, each waiting
+    for the GIL while this process's main thread writes the files (up to the interpreter's
+    switch interval, 5 ms).  The more workers, the busier that main thread and the longer
+    each one waits, idle, with the others queued on the lock.  A pipe that holds a whole
+    chunk frees the worker as soon as it has written it.
+    """
+    try:
+        import fcntl
+    except ImportError:                  # not POSIX
+        return None
+    queue = getattr(executor, "_result_queue", None) if isinstance(
+        executor, ProcessPoolExecutor) else None
+    reader = getattr(queue, "_reader", None)
+    set_size = getattr(fcntl, "F_SETPIPE_SZ", None)
+    if reader is None or set_size is None:
+        return None
+    size = RESULT_PIPE_BYTES
+    try:
+        with open("/proc/sys/fs/pipe-max-size") as fh:
+            size = min(size, int(fh.read()))
+    except (OSError, ValueError):
+        pass
+    try:
+        return fcntl.fcntl(reader.fileno(), set_size, size)
+    except (OSError, ValueError):        # above this user's limit, or the pipe is closed
+        return None
 
 
 def _warms_workers(executor) -> bool:
