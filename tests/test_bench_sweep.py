@@ -46,6 +46,10 @@ def test_every_configuration_runs_and_agrees_with_serial():
                if name.startswith("`contact run --quiet --jobs"))
     # every phase of each run reached and timed (the driver wraps the chunks' iterator)
     assert all("to the first chunk" in ratio and "?" not in ratio for ratio in cli), cli
+    # the forked pools' workers timed handing back their chunks
+    pooled = [ratio for name, _, ratio, _ in rows
+              if name.startswith("`contact run --quiet --jobs 2")]
+    assert pooled and all("its workers handed back" in ratio for ratio in pooled), pooled
 
 
 def test_in_process_rows_time_the_solve_the_scene_and_the_writers_text():
@@ -69,6 +73,11 @@ def test_phases_of_a_run_add_up_to_its_wall_time():
     assert "forked" not in text                         # no pool that forks: no fork times
     forked = bench_sweep.phase_text({**marks, "forked_first": 0.55, "forked_last": 0.58}, 3.3)
     assert "to the first chunk 0.10 (workers forked at 0.55-0.58)" in forked
+    # a forked pool's workers: 0.5 s handing back 10 chunks, of 2 workers x 2.5 s of stream
+    sent = bench_sweep.phase_text({**marks, "forks": 2, "forked_first": 0.55,
+                                   "forked_last": 0.58, "sent": 10, "sending": 0.5}, 3.3)
+    assert ("(the command's process busy 20% of the stream; its workers handed back 10 chunks "
+            "in 0.50 s, 50.0 ms each, 10.0% of their time)") in sent
     parts = [float(w) for w in text.split("(")[0].split() + text.split(")")[1].split()
              if w[0].isdigit()]
     assert parts == [0.5, 0.1, 2.5, 0.15, 0.05] and abs(sum(parts) - 3.3) < 1e-9

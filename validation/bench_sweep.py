@@ -233,7 +233,10 @@ def _contact_run(path, out, *args, entry=("-m", "contact"), quiet=True) -> list:
 #: and the last worker forked, for a pool that forks; the first and the last chunk of
 #: results delivered; the files written), and the CPU time of the command's own process (all
 #: its threads, not its workers) at the first and the last chunk (``cpu_first``,
-#: ``cpu_last``): how busy it kept itself while the workers solved.
+#: ``cpu_last``): how busy it kept itself while the workers solved; for a process pool that
+#: forks, the chunks its workers handed back (``sent``) and the wall seconds they spent
+#: doing it, all workers together (``sending``: pickling a chunk's results and writing them
+#: into the pool's result pipe, waiting while it is full).
 _TIMED_CONTACT_RUN = """
 import os, sys, time
 t0 = time.perf_counter()
@@ -253,6 +256,19 @@ forks = None
 if hasattr(os, "register_at_fork"):     # POSIX: each forked worker writes when it starts
     forks, fork_log = os.pipe()
     os.register_at_fork(after_in_child=lambda: os.write(fork_log, b"%.4f " % since_start()))
+    # each forked worker of a process pool appends the seconds each chunk's results took to
+    # hand back (one file, opened for appending before the forks)
+    import concurrent.futures.process as pool
+    import tempfile
+    fd, sends_path = tempfile.mkstemp()
+    os.close(fd)
+    sends = os.open(sends_path, os.O_RDWR | os.O_APPEND)
+    os.unlink(sends_path)
+    def sendback_result(*args, _inner=pool._sendback_result, **kwargs):
+        t = time.perf_counter()
+        _inner(*args, **kwargs)
+        os.write(sends, b"%.6f " % (time.perf_counter() - t))
+    pool._sendback_result = sendback_result
 try:
     contact.cli.console()               # main(), then out by SystemExit
 finally:
@@ -265,7 +281,12 @@ finally:
         except BlockingIOError:         # a worker still holds the pipe open, wrote nothing
             forked = []
         if forked:
+            marks["forks"] = len(forked)
             marks["forked_first"], marks["forked_last"] = min(forked), max(forked)
+        sent = [float(t) for t in os.pread(sends, os.fstat(sends).st_size, 0).split()]
+        os.close(sends)
+        if sent:
+            marks["sent"], marks["sending"] = len(sent), sum(sent)
     print("PHASES", *(f"{k}={v:.4f}" for k, v in marks.items()), file=sys.stderr)
 """
 
@@ -286,7 +307,8 @@ def _phases(stderr: str) -> dict:
 def phase_text(phases: dict, wall: float) -> str:
     """Where a run's wall time went: start-up (imports, then to the first chunk of results),
     the stream of chunks, the files written, the exit with the interpreter's start (before
-    the first mark) ("?" for a phase not reached)."""
+    the first mark) ("?" for a phase not reached); and, for a pool that forks, the time its
+    workers spent handing back their chunks, each and as a share of theirs in the stream."""
     at = {"start": 0.0, **phases, "end": wall}
 
     def gap(a, b):
@@ -294,7 +316,13 @@ def phase_text(phases: dict, wall: float) -> str:
     busy = forks = ""
     if {"cpu_first", "cpu_last", "first", "last"} <= at.keys() and at["last"] > at["first"]:
         share = (at["cpu_last"] - at["cpu_first"]) / (at["last"] - at["first"])
-        busy = f" (the command's process busy {share:.0%} of the stream)"
+        busy = f"the command's process busy {share:.0%} of the stream"
+    if {"sent", "sending", "forks", "first", "last"} <= at.keys() and at["last"] > at["first"]:
+        spent = at["sending"] / (at["forks"] * (at["last"] - at["first"]))
+        busy += (f"{'; ' if busy else ''}its workers handed back {at['sent']:.0f} chunks in "
+                 f"{at['sending']:.2f} s, {1e3 * at['sending'] / at['sent']:.1f} ms each, "
+                 f"{spent:.1%} of their time")
+    busy = f" ({busy})" if busy else ""
     if {"forked_first", "forked_last"} <= at.keys():
         forks = f" (workers forked at {at['forked_first']:.2f}-{at['forked_last']:.2f})"
     return (f"imports {gap('start', 'imported')} + to the first chunk {gap('imported', 'first')}"
