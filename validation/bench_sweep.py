@@ -500,6 +500,10 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
                 for jobs in counts:
                     if alone is not None:
                         solo.setdefault(jobs, []).append(alone(jobs))
+                        rate, spread = solo[jobs][-1]
+                        print(f"  {jobs} process(es) solving alone: {rate:.0f} cases/s "
+                              f"(slowest {spread:.2f}x the fastest)", file=sys.stderr,
+                              flush=True)
                     runs.setdefault(jobs, []).append(run(("--jobs", str(jobs))))
                 for jobs in printed_counts:
                     runs.setdefault(("printed", jobs), []).append(
