@@ -495,3 +495,16 @@ def test_only_a_process_pool_has_a_result_pipe_to_widen():
     assert batch.widen_result_pipe(None) is None
     with ThreadPoolExecutor(1) as ex:
         assert batch.widen_result_pipe(ex) is None
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="F_SETPIPE_SZ is Linux's")
+def test_a_result_pipe_already_larger_is_not_shrunk(monkeypatch):
+    """A pipe that already holds more than RESULT_PIPE_BYTES (here the default 64 kB
+    against 16 kB asked) is left as it is."""
+    import fcntl
+    monkeypatch.setattr(batch, "RESULT_PIPE_BYTES", 16 * 1024)
+    with ProcessPoolExecutor(1) as ex:
+        fd = ex._result_queue._reader.fileno()
+        before = fcntl.fcntl(fd, fcntl.F_GETPIPE_SZ)
+        assert before > batch.RESULT_PIPE_BYTES
+        assert batch.widen_result_pipe(ex) == before == fcntl.fcntl(fd, fcntl.F_GETPIPE_SZ)

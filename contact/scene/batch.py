@@ -229,8 +229,9 @@ def _ahead(per_case: float) -> int:
 def widen_result_pipe(executor) -> int | None:
     """Ask the pipe that a :class:`~concurrent.futures.ProcessPoolExecutor`'s workers send
     their results through to hold ``RESULT_PIPE_BYTES`` (Linux's ``F_SETPIPE_SZ``, up to
-    ``/proc/sys/fs/pipe-max-size``); its size in bytes, or None where there is no such pipe
-    or its size cannot be set (another platform, another executor).
+    ``/proc/sys/fs/pipe-max-size``; a larger pipe is left as it is); its size in bytes, or
+    None where there is no such pipe or its size cannot be set (another platform, another
+    executor).
 
     A worker writes a chunk's results into the pipe, holding the pool's one write lock, and
     is blocked until all of it is in: with the default 64 kB, until this process's thread
@@ -257,7 +258,8 @@ def widen_result_pipe(executor) -> int | None:
     except (OSError, ValueError):
         pass
     try:
-        return fcntl.fcntl(reader.fileno(), set_size, size)
+        current = fcntl.fcntl(reader.fileno(), fcntl.F_GETPIPE_SZ)
+        return current if current >= size else fcntl.fcntl(reader.fileno(), set_size, size)
     except (OSError, ValueError):        # above this user's limit, or the pipe is closed
         return None
 
