@@ -145,6 +145,25 @@ def test_sweep_csv_of_two_zones_has_per_zone_columns(tmp_path):
         assert r["load_check"] < 1e-12 and r["residual"] < 1e-10
 
 
+def test_a_one_zone_sweeps_csv_is_the_file_written_as_the_cases_came(tmp_path, monkeypatch):
+    """A sweep whose cases each have one zone: sweep.csv is the one-zone table written under
+    its header as the cases came, moved into place, neither laid out again from the raw rows
+    nor copied at the end; it equals the table made from the kept results."""
+    from contact.scene import table as table_module
+
+    def read_back(*args, **kwargs):
+        raise AssertionError("sweep.csv read back at the end")
+    path = write_scene(tmp_path, CYLINDER_SWEEP)
+    columns, table = run_scene(load_scene(path)).table()
+    monkeypatch.setattr(table_module.SweepTable, "lay_out", read_back)
+    monkeypatch.setattr(table_module.shutil, "copyfileobj", read_back)
+    rc, _, err = run_cli("run", path, "--out", tmp_path / "out", "--quiet", "--no-figures")
+    assert rc == 0, err
+    header, rows = read_sweep(tmp_path / "out" / "sweep.csv")
+    assert header == columns and "zones" not in header
+    assert [[cell(c) for c in row] for row in rows] == table
+
+
 def test_sweep_csv_when_a_later_case_has_two_zones_equals_the_table(tmp_path):
     """sweep.csv is written from the one-zone rows while every case has one zone; a case
     with two (the W face at a light load, after heavy loads that close the gap) lays every
