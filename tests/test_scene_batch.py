@@ -235,12 +235,14 @@ Text = namedtuple("Text", "index json row")
 @pytest.mark.parametrize("items", [
     [(7, Text(7, '{"a": 1}', "7,1\r\n")), (8, Text(8, "{}", "8,\r\n"))],
     [(3, Text(3, "x", "y")), (4, contact.LoadError("case 4 fails"))],      # not all texts
+    [(3, Text(3, "x", "y")), (4, contact.LoadError("case 4")), (5, Text(5, "z", "w"))],
     [(0, 0), (1, 2)],                                                     # not named tuples
     []])
 def test_chunk_results_cross_a_column_at_a_time_and_come_back_equal(items):
     """A chunk of one named tuple type is pickled as its columns (one reduce for the chunk,
-    none per case) and made again as the same tuples of the same type; any other chunk is
-    pickled as it is."""
+    none per case) and made again as the same tuples of the same type, known to hold no
+    failure without a look at its cases; any other chunk is pickled as it is.  Either way
+    the chunk names its first failing case and is cut after it."""
     import pickle
     chunk = batch.ChunkResults(items, 0.25)
     reduced = chunk.__reduce__()
@@ -251,6 +253,14 @@ def test_chunk_results_cross_a_column_at_a_time_and_come_back_equal(items):
     for (_, a), (_, b) in zip(items, back.items):
         assert type(a) is type(b) and (a == b if not isinstance(a, Exception) else
                                        str(a) == str(b))
+    first_failure = next((i for i, r in items if isinstance(r, Exception)), None)
+    assert back.failed == chunk.failed == first_failure
+    if by_columns:
+        assert back._failed is None                       # known on arrival: nothing scanned
+    kept, failed = back.up_to_failure()
+    assert failed == (first_failure is not None)
+    assert [i for i, _ in kept] == [i for i, _ in items
+                                    if first_failure is None or i <= first_failure]
 
 
 def test_which_executors_are_warmed_up_by_this_process():

@@ -120,11 +120,29 @@ class ChunkResults:
     sweep: the client's IO loop spent 0.6 s of CPU on them, 0.5 s with this one piece; a
     process pool pickles either in one piece), with the seconds the worker spent on it (what
     sizes the next chunks)."""
-    __slots__ = ("items", "seconds")
+    __slots__ = ("items", "seconds", "_failed")
 
-    def __init__(self, items, seconds=math.nan):
+    def __init__(self, items, seconds=math.nan, failed=...):
         self.items = items
         self.seconds = seconds
+        self._failed = failed                   # ...: not known yet
+
+    @property
+    def failed(self) -> int | None:
+        """The index of the chunk's first case whose result is an exception (a library input
+        error, see :func:`run_chunk`), or None: known without a look at each case for a chunk
+        that crossed as columns (every result a named tuple of one type, none an exception),
+        found once otherwise."""
+        if self._failed is ...:
+            self._failed = next((i for i, res in self.items if isinstance(res, Exception)),
+                                None)
+        return self._failed
+
+    def up_to_failure(self) -> tuple:
+        """(the items up to the first failure included, whether there was one)."""
+        if self.failed is None:
+            return self.items, False
+        return _up_to_failure(self.items)
 
     def __reduce__(self):
         """Pickled a column at a time where every result is a named tuple of one type (a
@@ -144,9 +162,9 @@ class ChunkResults:
 
 def _from_columns(kind, indices, columns, seconds) -> ChunkResults:
     """The ChunkResults that :meth:`ChunkResults.__reduce__` took apart: its named tuples
-    made again from their columns."""
+    made again from their columns; none of them an exception."""
     make = functools.partial(tuple.__new__, kind)
-    return ChunkResults(list(zip(indices, map(make, zip(*columns)))), seconds)
+    return ChunkResults(list(zip(indices, map(make, zip(*columns)))), seconds, failed=None)
 
 
 def run_range(fn, source, start: int, stop: int) -> ChunkResults:
@@ -314,7 +332,7 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
         per_case, size = math.inf, max(1, _PROBE // 2)
     else:
         size = chunk_size(left, workers, per_case)
-    done = {}                           # first index of a finished chunk -> its results
+    done = {}                           # first index of a finished chunk -> its ChunkResults
     running = {}                        # future -> first index of its chunk
     next_start = start                  # first index not yet handed out
     delivered = start                   # first index not yet delivered
@@ -327,7 +345,7 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
                 running[executor.submit(run_range, fn, source, next_start, stop)] = next_start
                 next_start = stop
             while delivered in done:
-                items, failed_here = _up_to_failure(done.pop(delivered))
+                items, failed_here = done.pop(delivered).up_to_failure()
                 yield items
                 if failed_here:
                     return
@@ -342,11 +360,12 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
                 chunk = fut.result()
                 items = chunk.items
                 on_done(len(items))
-                done[first] = items
+                done[first] = chunk
                 if items and chunk.seconds < per_case * len(items):
                     per_case = chunk.seconds / len(items)
                     size = chunk_size(left, workers, per_case)
-                failed = min([failed] + [i for i, r in items if isinstance(r, Exception)])
+                if chunk.failed is not None:
+                    failed = min(failed, chunk.failed)
             for fut, first in list(running.items()):
                 if first > failed and fut.cancel():
                     del running[fut]
