@@ -476,29 +476,46 @@ def test_every_case_delivered_when_the_window_empties_at_once(monkeypatch):
     assert got == [(i, i) for i in range(100)]
 
 
+def _pipe_max_size() -> int:
+    with open("/proc/sys/fs/pipe-max-size") as fh:
+        return int(fh.read())
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="F_SETPIPE_SZ is Linux's")
-def test_a_pools_result_pipe_takes_a_whole_chunk_without_a_reader():
-    """Once iter_chunks has run on a process pool, a worker writes a chunk of results of
-    ~0.9 MB into the pool's result pipe in one go, nothing reading it (the default pipe, 64
-    kB, would block it after 64 kB), and the pipe gives back exactly what went in."""
+def test_iter_chunks_widens_a_pools_result_pipe():
+    """Once iter_chunks has run on a process pool, the pipe its workers send their results
+    through holds RESULT_PIPE_BYTES (or this system's most, if less), not the default 64 kB."""
     import fcntl
     with ProcessPoolExecutor(2) as ex:
         got = list(batch.iter_chunked(indices, fake_cases(8), ex, lambda k: None))
         assert [i for i, _ in got] == list(range(8))
-        reader, writer = ex._result_queue._reader, ex._result_queue._writer
-        assert fcntl.fcntl(reader.fileno(), fcntl.F_GETPIPE_SZ) == batch.widen_result_pipe(ex)
-        if batch.widen_result_pipe(ex) < batch.RESULT_PIPE_BYTES:
-            pytest.skip("this system's pipe-max-size is below RESULT_PIPE_BYTES")
+        size = fcntl.fcntl(ex._result_queue._reader.fileno(), fcntl.F_GETPIPE_SZ)
+    assert size == min(batch.RESULT_PIPE_BYTES, _pipe_max_size()) > 64 * 1024
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="F_SETPIPE_SZ is Linux's")
+def test_a_widened_result_pipe_takes_a_whole_chunk_without_a_reader():
+    """A worker writes a chunk of results of ~0.9 MB into a widened result pipe in one go,
+    nothing reading it (a 64 kB pipe would take 64 kB and block it), and the pipe gives back
+    exactly what went in.  (A pool not started yet: no thread of its own reads the pipe.)"""
+    if _pipe_max_size() < batch.RESULT_PIPE_BYTES:
+        pytest.skip("this system's pipe-max-size is below RESULT_PIPE_BYTES")
+    ex = ProcessPoolExecutor(1)
+    try:
+        assert batch.widen_result_pipe(ex) == batch.RESULT_PIPE_BYTES
+        reader, writer = ex._result_queue._reader.fileno(), ex._result_queue._writer.fileno()
         message = bytes(range(256)) * (900_000 // 256)
-        os.set_blocking(writer.fileno(), False)
+        os.set_blocking(writer, False)
         try:
-            assert os.write(writer.fileno(), message) == len(message)   # no BlockingIOError
+            assert os.write(writer, message) == len(message)    # no BlockingIOError
         finally:
-            os.set_blocking(writer.fileno(), True)
+            os.set_blocking(writer, True)
         back = b""
         while len(back) < len(message):
-            back += os.read(reader.fileno(), len(message) - len(back))
+            back += os.read(reader, len(message) - len(back))
         assert back == message
+    finally:
+        ex.shutdown()
 
 
 def test_only_a_process_pool_has_a_result_pipe_to_widen():
