@@ -6,6 +6,8 @@ settings reach the workers as the README says (no statistical profiler, MALLOC_T
 unset, Dask's one-thread BLAS limits kept)."""
 import math
 import os
+import threading
+import types
 
 import pytest
 
@@ -89,10 +91,36 @@ def test_processes_alone_count_what_each_solved():
     """processes_alone: n processes' summed rate is positive and finite, about n times one
     process's at most (they solve the same cases), and the slowest of them is at least as
     slow as the fastest."""
-    with bench_sweep.processes_alone(bench_sweep.sweep_toml(30, 30), cases=300) as alone:
+    with bench_sweep.processes_alone(bench_sweep.sweep_toml(30, 30), cases=300,
+                                     seconds=0.2) as alone:
         (one, spread1), (two, spread2) = alone(1), alone(2)
     assert spread1 == 1.0 and spread2 >= 1.0
     assert 0.0 < one < math.inf and 0.0 < two < 2.5 * one
+
+
+class _Cases:
+    """A scene of cases that are only their index."""
+
+    def iter_cases(self, start, stop):
+        return (types.SimpleNamespace(index=i) for i in range(start, stop))
+
+
+def test_a_process_alone_counts_the_cases_of_its_seconds_alone(monkeypatch):
+    """_solve_alone on cases of 2 ms each (on a clock that the cases move), in chunks of 15
+    (30 ms), for 0.1 s: 50 cases, the chunk running at the end counted for the third of it
+    inside the 0.1 s (whole chunks would give 45 or 60), the chunks taken over again once
+    both are done."""
+    clock = [100.0]
+    monkeypatch.setattr(bench_sweep, "time", types.SimpleNamespace(perf_counter=lambda: clock[0]))
+
+    def two_ms_each(cases):
+        clock[0] += 2e-3 * len(cases)
+        return [None] * len(cases)
+    sent = []
+    bench_sweep._solve_alone(two_ms_each, _Cases(), [(0, 15), (100, 115)], 0.1,
+                             threading.Barrier(1),
+                             types.SimpleNamespace(send=sent.append, close=lambda: None))
+    assert sent == [pytest.approx(50.0, rel=1e-9)]
 
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],

@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib.util
+import itertools
 import math
 import os
 import resource
@@ -331,40 +332,54 @@ def phase_text(phases: dict, wall: float) -> str:
             f" + exit and interpreter start {gap('written', 'end')} s")
 
 
-#: Cases each process of :func:`processes_alone` solves (~1.2 s on the 2-core VM).
+#: Seconds the processes of :func:`processes_alone` solve for, all of them at once.
+CEILING_S = 2.0
+#: Cases of the sweep that the processes of :func:`processes_alone` take their chunks from.
 CEILING_CASES = 20_000
 
 
-def _solve_alone(fn, scene, ranges, chunk, conn):
-    """Solve the cases start <= index < stop of ``scene`` for each (start, stop) of
-    ``ranges`` in chunks of ``chunk`` as a worker of ``contact run`` would
-    (:func:`contact.scene.batch.run_range`), keeping nothing, and send back the wall seconds
-    it took."""
+def _solve_alone(fn, scene, chunks, seconds, ready, conn):
+    """Solve the ``chunks`` ((start, stop) of case indices of ``scene``), over again in
+    turn, as a worker of ``contact run`` would (:func:`contact.scene.batch.run_range`),
+    keeping nothing, from the moment every process of the group has passed ``ready`` (a
+    barrier) until ``seconds`` have passed; send back the cases solved in those seconds
+    (the chunk running at the end counted for the share of its time that falls in them)."""
     from contact.scene.batch import run_range
+    ready.wait()
     t0 = time.perf_counter()
-    for start, stop in ranges:
-        for s in range(start, stop, chunk):
-            run_range(fn, scene, s, min(stop, s + chunk))
-    conn.send(time.perf_counter() - t0)
+    solved, now = 0.0, t0
+    for start, stop in itertools.cycle(chunks):
+        begun = now
+        run_range(fn, scene, start, stop)
+        now = time.perf_counter()
+        if now - t0 >= seconds:
+            solved += (stop - start) * (t0 + seconds - begun) / (now - begun)
+            break
+        solved += stop - start
+    conn.send(solved)
     conn.close()
 
 
 @contextlib.contextmanager
-def processes_alone(text, cases=CEILING_CASES):
+def processes_alone(text, cases=CEILING_CASES, seconds=CEILING_S):
     """The machine's own ceiling for N workers, measured when asked: a function ``alone(n)``
     -> (cases a second, slowest / fastest process) of n processes solving at once (None where
     processes cannot be forked).
 
-    The n processes, forked from this one (warm), each solve the same ``cases`` cases of the
-    sweep of TOML ``text`` (ten stretches spread over it, so that they mix its inputs as the
-    whole sweep does) in chunks sized as a pool's (:func:`contact.scene.batch.chunk_size`),
+    The n processes, forked from this one (warm), solve chunks of the same ``cases`` cases
+    of the sweep of TOML ``text`` (ten stretches spread over it, so that they mix its inputs
+    as the whole sweep does), sized as a pool's (:func:`contact.scene.batch.chunk_size`),
     with the chunk function of ``contact run`` (each case encoded as its writers want it),
     nothing passing between them or to a parent: what a pool's workers do, less the pool.
-    Their rate is the sum of each one's cases / wall.  On a machine that runs n busy
-    processes slower than one (shared physical cores, memory bandwidth, a hypervisor's other
-    guests), n times the rate of one is out of any pool's reach; and on one whose speed
-    drifts from minute to minute, a pool is best judged against this rate measured just
-    before it."""
+    They start together (a barrier) and each counts what it solved in the same ``seconds``,
+    so that every one of them is busy for the whole of the time measured (where each solved
+    a fixed number of cases instead, those that finished first would leave the slower ones
+    the machine to themselves for a while, and the summed rate would overstate what n busy
+    processes get).  Their rate is the sum of each one's cases / ``seconds``.  On a machine
+    that runs n busy processes slower than one (shared physical cores, memory bandwidth, a
+    hypervisor's other guests), n times the rate of one is out of any pool's reach; and on
+    one whose speed drifts from minute to minute, a pool is best judged against this rate
+    measured just before it."""
     import functools
     import multiprocessing as mp
     from contact.scene import SceneWriter, parse_scene_text
@@ -385,22 +400,24 @@ def processes_alone(text, cases=CEILING_CASES):
         chunk = chunk_size(total, 1, per_case)          # as a pool sizes its chunks
         # ten stretches spread over the sweep: its mix of speeds and frictions
         length = max(1, min(cases, total) // 10)
-        ranges = [(k * (total - length) // 9, k * (total - length) // 9 + length)
-                  for k in range(10)]
-        solved = 10 * length
+        chunks = [(s, min(first + length, s + chunk))
+                  for first in (k * (total - length) // 9 for k in range(10))
+                  for s in range(first, first + length, chunk)]
 
         def alone(n):
+            ready = ctx.Barrier(n)
             pipes = [ctx.Pipe(duplex=False) for _ in range(n)]
-            procs = [ctx.Process(target=_solve_alone, args=(fn, scene, ranges, chunk, send))
+            procs = [ctx.Process(target=_solve_alone,
+                                 args=(fn, scene, chunks, seconds, ready, send))
                      for _, send in pipes]
             for proc in procs:
                 proc.start()
             for _, send in pipes:           # a child that dies is then an EOFError here
                 send.close()
-            walls = [recv.recv() for recv, _ in pipes]
+            solved = [recv.recv() for recv, _ in pipes]
             for proc in procs:
                 proc.join()
-            return sum(solved / w for w in walls), max(walls) / min(walls)
+            return sum(solved) / seconds, max(solved) / min(solved)
         try:
             yield alone
         finally:
@@ -471,17 +488,19 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
                                   capture_output=True, text=True)
             wall = time.perf_counter() - t0
             cpu = _children_cpu_s() + _cluster_cpu_s(cluster) - before
-            phases = phase_text(_phases(proc.stderr), wall)
+            marks = _phases(proc.stderr)
+            phases = phase_text(marks, wall)
+            stream = marks.get("last", math.nan) - marks.get("first", math.nan)
             # each run as it ends, on stderr: a bench stopped at a time limit still tells
             # what it measured
             print(f"  {' '.join(args)}{' (small)' if scene is small else ''}"
                   f"{'' if quiet else ' (printed)'}: {wall:.2f} s, "
                   f"CPU {cpu:.1f} s, exit {proc.returncode}; {phases}", file=sys.stderr,
                   flush=True)
-            return wall, proc.returncode, cpu, phases
+            return wall, proc.returncode, cpu, phases, stream
 
         def best(key, n):
-            wall, rc, cpu, phases = min(runs[key], key=lambda r: r[0])
+            wall, rc, cpu, phases, _ = min(runs[key], key=lambda r: r[0])
             return wall, rc, (f"CPU {cpu:.1f} s ({cpu / (n * wall):.0%} of {n} core(s)); "
                               f"{phases}")
 
@@ -513,12 +532,16 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
             t, rc, busy = best(jobs, jobs)
             need = 1.7 if jobs == 2 else 0.8 * jobs
             ratio = fastest(1) / t
-            # the run's rate against that of N processes solving alone just before it
+            # the run's rate, and its stream's, against that of N processes solving alone
+            # just before it
             of = ""
             if jobs in solo:
                 share = statistics.median(cases / r[0] / rate
-                                for r, (rate, _) in zip(runs[jobs], solo[jobs]))
-                of = f" ({share:.0%} of the rate of {jobs} process(es) solving alone just before)"
+                                          for r, (rate, _) in zip(runs[jobs], solo[jobs]))
+                stream = statistics.median(cases / r[4] / rate if r[4] > 0 else math.nan
+                                           for r, (rate, _) in zip(runs[jobs], solo[jobs]))
+                of = (f" ({share:.0%} of the rate of {jobs} process(es) solving alone just "
+                      f"before; its stream {stream:.0%})")
             rows.append((f"`contact run --quiet --jobs {jobs}`{failed(rc)}", t,
                          f"{ratio:.2f}x --jobs 1{of}; {busy}",
                          "" if jobs == 1 else f">= {need:.1f}x"
@@ -530,8 +553,9 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
                          f"{t / fastest(jobs):.2f}x the time with --quiet; {busy}", ""))
         if solo:
             one = max(solo[1])[0]
-            rows.append((f"the machine's ceiling: N processes solving the same "
-                         f"{min(CEILING_CASES, cases) // 10 * 10} cases each at once, nothing passed "
+            rows.append((f"the machine's ceiling: N processes solving at once for "
+                         f"{CEILING_S:g} s (chunks of the same "
+                         f"{min(CEILING_CASES, cases) // 10 * 10} cases), nothing passed "
                          "between them", float("nan"),
                          "; ".join(f"N = {n}: {max(r)[0] / one:.2f}x one (slowest process "
                                    f"{max(r)[1]:.2f}x the fastest)" for n, r in solo.items()),
