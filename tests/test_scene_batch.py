@@ -184,10 +184,10 @@ def test_chunks_come_whole_and_the_failing_one_is_cut_after_its_failure(pool, mo
     assert flat == list(range(6))
     assert isinstance(chunks[-1][-1][1], contact.LoadError)
     assert not any(isinstance(res, Exception) for chunk in chunks[:-1] for _, res in chunk)
-    if pool == "serial":                                 # _PROBE, then SERIAL_CHUNK a time
-        assert [len(c) for c in chunks] == [4, 2]
-    else:                                                # the probe in two halves
-        assert [len(c) for c in chunks[:2]] == [2, 2]
+    if pool == "serial":                         # the first case, then SERIAL_CHUNK a time
+        assert [len(c) for c in chunks] == [1, 3, 2]
+    else:                                        # the probe: the first case, then the rest
+        assert [len(c) for c in chunks[:2]] == [1, 3]
 
 
 def test_progress_counts_cases():
@@ -200,10 +200,9 @@ def test_progress_counts_cases():
 
 def test_serial_runs_chunks_of_cases(monkeypatch):
     """Without an executor the cases still go to the chunk function in chunks (solved
-    together): _PROBE first, then as many as TARGET_CHUNK_S of work holds, SERIAL_CHUNK at
-    most; delivered in order."""
+    together): the first case alone (it warms the process up), then as many as
+    TARGET_CHUNK_S of work holds, SERIAL_CHUNK at most; delivered in order."""
     monkeypatch.setattr(batch, "SERIAL_CHUNK", 7)
-    monkeypatch.setattr(batch, "_PROBE", 3)
     seen = []
 
     def record(cases):
@@ -211,7 +210,7 @@ def test_serial_runs_chunks_of_cases(monkeypatch):
         return indices(cases)
     got = list(batch.iter_chunked(record, fake_cases(20), None, lambda k: None))
     assert got == [(i, i) for i in range(20)]
-    assert seen == [[0, 1, 2], list(range(3, 10)), list(range(10, 17)), [17, 18, 19]]
+    assert seen == [[0], list(range(1, 8)), list(range(8, 15)), list(range(15, 20))]
     # slow cases: chunks of one, the progress moves with each case
     seen.clear()
 
@@ -220,7 +219,7 @@ def test_serial_runs_chunks_of_cases(monkeypatch):
         return record(cases)
     monkeypatch.setattr(batch, "TARGET_CHUNK_S", 0.01)
     list(batch.iter_chunked(slow, fake_cases(6), None, lambda k: None))
-    assert [len(c) for c in seen] == [3, 1, 1, 1]
+    assert [len(c) for c in seen] == [1] * 6
 
 
 def test_worker_count():

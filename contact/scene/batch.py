@@ -47,7 +47,9 @@ CHUNKS_PER_WORKER = 4
 TAIL_SPLIT = 2
 #: Full chunks per worker handed out past the first case not yet delivered.
 CHUNKS_AHEAD = 8
-#: Cases solved here first, as one chunk, to size the chunks of an executor.
+#: Cases solved here first, to size the chunks of an executor: the first of them alone, which
+#: warms this process up (numba loading its kernels: ~0.15 s), then the rest as one chunk,
+#: timed.
 _PROBE = 16
 #: Bytes a process pool's result pipe is asked to hold (:func:`widen_result_pipe`): a
 #: chunk's results (~0.75 kB a case of ``contact run``'s encoded text, ``TARGET_CHUNK_S`` of
@@ -190,13 +192,16 @@ def iter_chunks(fn, source, executor, on_done):
     generator step per case cost the process that feeds two workers 0.3 s on 1e5 cases).
 
     ``source`` is a :class:`~contact.scene.spec.Scene` (anything with ``case_count`` and
-    ``iter_cases(start, stop)``, picklable when ``executor`` runs elsewhere).  ``executor``
-    None (or fewer than two cases): every case here, in chunks of about ``TARGET_CHUNK_S``
-    of work (sized from the chunk before; ``_PROBE`` cases first, ``SERIAL_CHUNK`` at most:
-    the progress moves a few times a second).  Otherwise, where the executor's workers are
-    this process's threads or forks (:func:`_warms_workers`), the first ``_PROBE`` cases
-    run here as two chunks (the second's time sizes the chunks: :func:`chunk_size`; the
-    first warms this process up, and the workers forked after it); the rest
+    ``iter_cases(start, stop)``, picklable when ``executor`` runs elsewhere).  The first
+    case solved here is a chunk of its own: it warms this process up (numba loading its
+    kernels), and that time is its own alone, where a chunk's cases share their chunk's
+    (:func:`contact.scene.run.run_cases`).  ``executor`` None (or fewer than two cases):
+    every case here, in chunks of about ``TARGET_CHUNK_S`` of work (sized from the chunk
+    before, ``SERIAL_CHUNK`` at most: the progress moves a few times a second).
+    Otherwise, where the executor's workers are this process's threads or forks
+    (:func:`_warms_workers`), the first ``_PROBE`` cases run here as two chunks (the first
+    case, which warms this process up and the workers forked after it, then the rest,
+    whose time sizes the chunks: :func:`chunk_size`); the rest
     go to ``executor`` as ranges of indices (:func:`run_range`), at most ``CHUNKS_AHEAD``
     full chunks per worker past the first case not yet delivered (a process pool's result
     pipe first widened to hold a chunk: :func:`widen_result_pipe`).  Once a case fails, the
@@ -205,7 +210,7 @@ def iter_chunks(fn, source, executor, on_done):
     """
     total = source.case_count
     if executor is None or total < 2:
-        start, size = 0, _PROBE
+        start, size = 0, 1
         while start < total:
             stop = min(total, start + size)
             t0 = time.perf_counter()
@@ -223,12 +228,10 @@ def iter_chunks(fn, source, executor, on_done):
     if not _warms_workers(executor):        # each worker warms up on its first chunk
         yield from _windowed(fn, source, executor, 0, total, None, workers, on_done)
         return
-    # the probe in two halves: the first warms this process up (numba's cache, the
-    # material's constants: ~10 ms a case), the second is timed
+    # the probe in two chunks: the first case warms this process up (numba's cache: ~0.15 s),
+    # the rest is timed
     probe, per_case = min(_PROBE, total), math.inf
-    for start, stop in ((0, probe // 2), (probe // 2, probe)):
-        if stop == start:
-            continue
+    for start, stop in ((0, 1), (1, probe)):
         t0 = time.perf_counter()
         items, failed = _up_to_failure(_run_here(fn, source, start, stop, on_done))
         yield items

@@ -42,7 +42,11 @@ class CaseResult:
         numpy arrays).  With several contact zones, ``zones`` stands in place of the
         single-zone fields ends, exponents and sif.
     time_s : float
-        Time to solve the case and sample its fields.
+        Time to solve the case and sample its fields: its share of the solve of the cases
+        solved together with it (:func:`run_cases`), and its own sampling.  The first case
+        of a run also carries loading the compiled kernels, and so do the first chunk's
+        cases of a worker that is not a fork of the running process (a Dask worker's, a
+        spawned process's: :mod:`contact.scene.batch`).
     warnings : list of str
     zones : list of dict
         Every contact zone (:func:`zone_entry`), whatever the fields asked: the table and the
