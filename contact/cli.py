@@ -62,7 +62,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--out", default="contact-out", metavar="DIR",
                      help="output directory (default: ./contact-out)")
     run.add_argument("--jobs", type=_jobs, default=1, metavar="N",
-                     help="solve sweep points in N worker processes (0: one per CPU; default 1)")
+                     help="solve sweep points in N worker processes (0: one per CPU this "
+                          "process may use; default 1)")
     run.add_argument("--scheduler", metavar="ADDRESS",
                      help="send the sweep to a Dask cluster at ADDRESS (needs the optional "
                           "extra: pip install 'sie-contact[dask]')")
@@ -167,7 +168,8 @@ def cmd_run(args) -> int:
         writer = scenes.SceneWriter(scene, args.out, scene.case_count,
                                     figures=None if args.figures else False, table=progress)
     with writer:
-        with _executor(args.jobs, args.scheduler) as executor, cyclic_gc_paused():
+        with _executor(args.jobs, args.scheduler, scene.case_count) as executor, \
+                cyclic_gc_paused():
             run = scenes.iter_scene(scene, executor=executor, progress=progress,
                                     encode=writer.encoder())
             for results in run.chunks():
@@ -194,9 +196,26 @@ def _writing_into(out):
         raise OSError(f"cannot write the outputs into --out {out}: {exc}") from None
 
 
+def usable_cpus() -> int:
+    """The CPUs this process may run on: its affinity mask where the platform keeps one (the
+    share of the machine that a container's cpuset or ``taskset`` gives it, which
+    ``os.cpu_count()`` does not see), else the machine's CPUs."""
+    count = getattr(os, "process_cpu_count", None)          # Python >= 3.13
+    if count is not None:
+        return count() or 1
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except AttributeError:                                   # not Linux
+        return os.cpu_count() or 1
+
+
 @contextlib.contextmanager
-def _executor(jobs: int, scheduler: str | None):
-    """None (serial), a process pool, or a Dask cluster's concurrent.futures executor."""
+def _executor(jobs: int, scheduler: str | None, cases: int | None = None):
+    """None (serial), a process pool, or a Dask cluster's concurrent.futures executor.
+    ``--jobs 0`` is one worker per CPU this process may use (:func:`usable_cpus`), and a
+    pool has no more workers than ``cases`` (where given); more workers than CPUs is a
+    warning: they share the CPUs, each forked with its own memory, and run slower than one
+    per CPU."""
     if scheduler is not None:
         if jobs not in (0, 1):
             raise UsageError("give --jobs or --scheduler, not both (the cluster decides how "
@@ -204,8 +223,15 @@ def _executor(jobs: int, scheduler: str | None):
         with _dask_executor(scheduler) as ex:
             yield ex
         return
+    cpus, asked = usable_cpus(), jobs
     if jobs == 0:
-        jobs = os.cpu_count() or 1
+        jobs = cpus
+    if cases is not None:
+        jobs = min(jobs, max(cases, 1))
+    if jobs > cpus:
+        print(f"contact: warning: --jobs {asked} is more than the {cpus} CPU(s) this process "
+              f"may use: its workers will share them, each with its own memory, slower than "
+              f"one per CPU (--jobs 0)", file=sys.stderr, flush=True)
     if jobs == 1:
         yield None
         return

@@ -220,6 +220,47 @@ def test_scheduler_without_the_extra_says_how_to_install(monkeypatch, capsys, tm
     assert "sie-contact[dask]" in err and "Traceback" not in err
 
 
+@pytest.mark.skipif(not hasattr(os, "sched_setaffinity"), reason="no CPU affinity here")
+def test_jobs_counts_the_cpus_this_process_may_use(tmp_path):
+    """A command held to one CPU (its affinity, as a container's cpuset or taskset sets it):
+    --jobs 0 runs one worker, in the process itself (no pool, no warning); --jobs 2 warns
+    that its workers share the one CPU, and still runs, giving the same sweep."""
+    scene = tmp_path / "sweep.toml"
+    scene.write_text('title = "s"\n[material]\npreset = "zhou2014"\n[punch]\n'
+                     'kind = "cylindrical"\nradius = 100.0\n[motion]\nload = 0.01\n'
+                     'speed = [0.0, 0.5]\nfriction = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, '
+                     '0.8, 0.9]\n[outputs]\nfields = ["ends"]\n')
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    outs = {}
+    for jobs in ("0", "2"):
+        child = ("import os, sys, concurrent.futures as cf, contact.cli\n"
+                 "os.sched_setaffinity(0, {sorted(os.sched_getaffinity(0))[0]})\n"
+                 "pools = []\n"
+                 "init = cf.ProcessPoolExecutor.__init__\n"
+                 "cf.ProcessPoolExecutor.__init__ = lambda self, *a, **k: "
+                 "(pools.append(k.get('max_workers')), init(self, *a, **k))[1]\n"
+                 f"status = contact.cli.main(['run', {str(scene)!r}, '--jobs', {jobs!r}, "
+                 f"'--out', {str(tmp_path / jobs)!r}, '--quiet', '--no-figures'])\n"
+                 "print(status, pools)\n")
+        proc = subprocess.run([sys.executable, "-c", child], env=env, capture_output=True,
+                              text=True, timeout=300)
+        assert proc.returncode == 0, proc.stderr[-3000:]
+        outs[jobs] = proc
+    assert outs["0"].stdout.split("\n")[-2] == "0 []" and "warning" not in outs["0"].stderr
+    assert outs["2"].stdout.split("\n")[-2] == "0 [2]"
+    assert "--jobs 2 is more than the 1 CPU(s) this process may use" in outs["2"].stderr
+    assert (tmp_path / "2" / "sweep.csv").read_bytes() == \
+        (tmp_path / "0" / "sweep.csv").read_bytes()
+
+
+def test_a_pool_has_no_more_workers_than_cases():
+    with cli._executor(8, None, cases=3) as ex:
+        assert ex._max_workers == 3
+    with cli._executor(8, None, cases=1) as ex:          # one case: solved here
+        assert ex is None
+
+
 def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
     assert cli.main(["run", "--jobs", "2", "--scheduler", "x:1", "--out", str(tmp_path)]) == 2
     assert "not both" in capsys.readouterr().err

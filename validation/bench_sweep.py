@@ -54,6 +54,12 @@ import numpy as np
 OUT = Path(__file__).resolve().parent / "out"
 
 
+def _usable_cpus() -> int:
+    """The CPUs this process may run on, as ``contact run --jobs 0`` counts them."""
+    from contact.cli import usable_cpus
+    return usable_cpus()
+
+
 def sweep_toml(n_speed, n_friction, fields=("ends", "exponents", "sif")):
     speeds = ", ".join(repr(float(v)) for v in np.round(np.linspace(0.0, 0.9, n_speed), 6))
     frictions = ", ".join(repr(float(v)) for v in np.round(np.linspace(0.0, 0.5, n_friction), 6))
@@ -145,7 +151,7 @@ def scaling_rows(scene):
     run_scene(scene)                                            # warm this process
     t1, serial = _timed(lambda: run_scene(scene))
     rows.append((f"{scene.case_count} cases, serial, in process", t1, "1.00", ""))
-    cores = os.cpu_count() or 1
+    cores = _usable_cpus()
     pooled = {}
     for n in sorted({1, 2, cores}):
         with ProcessPoolExecutor(n) as ex:
@@ -471,7 +477,7 @@ def cli_rows(n_speed, n_friction, repeats=3, counts=None, printed=False):
     them.  ``printed``: also ``contact run`` as it runs by default, the table printed and
     the progress bar drawn (without ``--quiet``), ``--jobs 1`` and of the largest count, in
     turns with the others."""
-    cores = os.cpu_count() or 1
+    cores = _usable_cpus()
     rows, runs = [], {}
     compile_bytecode()
     with tempfile.TemporaryDirectory() as tmp:
@@ -690,7 +696,7 @@ def main(argv=None):
         parser.error(f"--per-core must be at least 1, got {args.per_core}")
     quick, cli_only, repeats = args.quick, args.cli, args.repeats
     OUT.mkdir(parents=True, exist_ok=True)
-    cores = os.cpu_count() or 1
+    cores = _usable_cpus()
     rows = []
     if not cli_only:
         scene = parse_scene_text(sweep_toml(20 if quick else 100, 20 if quick else 100),
