@@ -9,7 +9,9 @@
 A user error (a bad scene, an inadmissible speed, a profile that loses contact) prints one
 message naming the file, the key and what is allowed, and exits with status 2 (a bad scene or
 argument, or an --out that cannot be written, found before anything is solved) or 1 (a case
-that failed while it was solved) -- never a traceback.
+that failed while it was solved, or a worker process that died) -- never a traceback.
+Stopped by Ctrl-C or SIGTERM, ``contact run`` removes its partial outputs and exits with 130
+or 143 (128 + the signal).
 """
 from __future__ import annotations
 
@@ -18,8 +20,10 @@ import contextlib
 import gc
 import multiprocessing
 import os
+import signal
 import sys
 from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 
 import contact
 import sie
@@ -33,11 +37,23 @@ TABLE1_SPEEDS = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.5, 2.0
 
 EXIT_BAD_INPUT = 2
 EXIT_CASE_FAILED = 1
+#: The shell's status of a command stopped by SIGINT (Ctrl-C) or SIGTERM: 128 + the signal.
+EXIT_INTERRUPTED = 128 + signal.SIGINT
+EXIT_TERMINATED = 128 + signal.SIGTERM
 
 
 class UsageError(Exception):
     """A command-line problem that is not about the scene file (e.g. --scheduler without
     the dask extra)."""
+
+
+class Terminated(Exception):
+    """The command was asked to stop by SIGTERM (``kill``, a batch system's time limit):
+    raised where it runs, so that it stops as on Ctrl-C, its partial outputs removed."""
+
+
+def _raise_terminated(signum, frame):
+    raise Terminated(signal.Signals(signum).name)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -128,9 +144,17 @@ def main(argv=None) -> int:
     except OSError as exc:                     # e.g. --out is not writable
         _error(str(exc))
         return EXIT_CASE_FAILED
+    except BrokenProcessPool as exc:
+        _error(f"a worker process of --jobs died before its cases were done "
+               f"({type(exc).__name__}); a worker killed by the system is most often out of "
+               "memory")
+        return EXIT_CASE_FAILED
     except KeyboardInterrupt:
         _error("interrupted")
-        return 130
+        return EXIT_INTERRUPTED
+    except Terminated as exc:
+        _error(f"terminated ({exc})")
+        return EXIT_TERMINATED
 
 
 def console():
@@ -142,7 +166,12 @@ def console():
     numpy, numba and scipy cost ~0.1 s of each run, on one core (measured on `contact run`
     of 1e5 cases: 0.14 s from the end of main() to the end of the process, 0.03 s frozen).
     Files are closed by main() itself; reference counting still frees what is torn down.
+
+    SIGTERM stops the command as Ctrl-C does (:class:`Terminated`): its partial outputs are
+    removed and it exits with status 143.  The workers of ``--jobs`` leave both signals to
+    it (:func:`_worker_signals`).
     """
+    signal.signal(signal.SIGTERM, _raise_terminated)
     status = main()
     gc.freeze()
     sys.exit(status)
@@ -235,8 +264,39 @@ def _executor(jobs: int, scheduler: str | None, cases: int | None = None):
     if jobs == 1:
         yield None
         return
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context()) as ex:
-        yield ex
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context(),
+                             initializer=_worker_signals) as ex:
+        try:
+            yield ex
+        except BrokenProcessPool:
+            _kill_workers(ex)
+            raise
+
+
+def _worker_signals():
+    """In a worker of ``--jobs``: SIGINT and SIGTERM ignored.  Ctrl-C sends SIGINT to the
+    whole process group, and a batch system or service manager SIGTERM to every process of
+    the job; the command alone stops on either: it cancels the chunks not started and shuts
+    its pool down, whose workers end as they finish their chunk.  A worker that ended on the
+    signal would break the pool under the command as it stops, and Python 3.11's pool,
+    marking its futures failed, trips over those the command has just cancelled
+    (InvalidStateError in its manager thread, which then never closes its queues: the
+    command hangs at exit).  A worker that dies otherwise (killed by the system) still
+    breaks the pool: :func:`_kill_workers` then ends the others."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+
+
+def _kill_workers(pool) -> None:
+    """Kill (SIGKILL) the workers of a broken process pool: it ends them with SIGTERM,
+    which they ignore (:func:`_worker_signals`), and waits for them."""
+    kill = getattr(pool, "kill_workers", None)                  # Python >= 3.14
+    if kill is not None:
+        kill()
+        return
+    for proc in list((getattr(pool, "_processes", None) or {}).values()):
+        with contextlib.suppress(OSError, ValueError):      # ended, or closed, meanwhile
+            proc.kill()
 
 
 def _pool_context():

@@ -3,6 +3,7 @@ shape of result.json, serial = --jobs 2 = a Dask cluster, the helpers, and user 
 exit non-zero with a message and no traceback."""
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import os
@@ -264,6 +265,98 @@ def test_a_pool_has_no_more_workers_than_cases():
 def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
     assert cli.main(["run", "--jobs", "2", "--scheduler", "x:1", "--out", str(tmp_path)]) == 2
     assert "not both" in capsys.readouterr().err
+
+
+# --------------------------------------------------------------------------
+# stopped from outside: Ctrl-C, SIGTERM, a worker killed
+# --------------------------------------------------------------------------
+def _endless_sweep(tmp_path):
+    """A scene of 1e9 cases (about a day on one core): a run that is stopped, not done."""
+    values = ", ".join(str(round(0.01 * k, 2)) for k in range(1000))
+    scene = tmp_path / "endless.toml"
+    scene.write_text('title = "endless"\n[material]\npreset = "zhou2014"\n[punch]\n'
+                     'kind = "cylindrical"\nradius = 100.0\n[motion]\n'
+                     f'load = [{", ".join(str(0.01 + 0.001 * k) for k in range(1000))}]\n'
+                     f'speed = [{", ".join(str(round(0.0009 * k, 4)) for k in range(1000))}]\n'
+                     f'friction = [{values}]\n[outputs]\nfields = ["ends"]\n')
+    return scene
+
+
+def _children(pid):
+    """The pids of the processes whose parent is ``pid`` (from /proc)."""
+    kids = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:                             # ended meanwhile
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                kids.append(int(entry.name))
+    return kids
+
+
+def _running_pool(tmp_path, jobs=2):
+    """``contact run`` of the endless sweep with ``--jobs`` in a session of its own (SIGINT
+    at its default, as in a terminal), once its ``jobs`` workers solve: (process, --out)."""
+    import signal
+    import time
+    out = tmp_path / "out"
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    proc = subprocess.Popen([sys.executable, "-m", "contact", "run", str(_endless_sweep(tmp_path)),
+                             "--quiet", "--no-figures", "--jobs", str(jobs), "--out", str(out)],
+                            env=env, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    deadline = time.monotonic() + 120
+    while len(_children(proc.pid)) < jobs and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert len(_children(proc.pid)) == jobs and out.is_dir()
+    time.sleep(0.5)                                     # the workers well into their chunks
+    return proc, out
+
+
+def _ended(proc):
+    """(exit status, stderr) of ``proc``; no process of its group left."""
+    try:
+        err = proc.communicate(timeout=60)[1]
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, 9)
+    return proc.returncode, err
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="signals to a process group")
+@pytest.mark.parametrize("name, status, said", [("SIGINT", 130, "contact: error: interrupted"),
+                                                ("SIGTERM", 143,
+                                                 "contact: error: terminated (SIGTERM)")])
+def test_a_sweep_stopped_by_a_signal_to_its_group_leaves_nothing(tmp_path, name, status, said):
+    """Ctrl-C (SIGINT) and a batch system's SIGTERM reach the command and its workers: the
+    command says so, exits with 128 + the signal and removes its partial outputs (--out
+    too, which it made); its workers end with it."""
+    import signal
+    import time
+    proc, out = _running_pool(tmp_path)
+    os.killpg(proc.pid, getattr(signal, name))
+    rc, err = _ended(proc)
+    assert rc == status and err.strip() == said
+    assert not out.exists()
+    time.sleep(0.2)
+    with pytest.raises(ProcessLookupError):             # no worker outlived it
+        os.killpg(proc.pid, 0)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc")
+def test_a_worker_killed_under_a_sweep_is_named_not_a_traceback(tmp_path):
+    """A worker killed outright (SIGKILL: the system's out-of-memory killer) breaks the
+    pool: the command says a worker died, exits with status 1 and removes its partial
+    outputs."""
+    proc, out = _running_pool(tmp_path)
+    os.kill(_children(proc.pid)[0], 9)
+    rc, err = _ended(proc)
+    assert rc == 1 and "Traceback" not in err
+    assert err.startswith("contact: error: a worker process of --jobs died")
+    assert not out.exists()
 
 
 # --------------------------------------------------------------------------
