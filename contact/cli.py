@@ -265,12 +265,40 @@ def _executor(jobs: int, scheduler: str | None, cases: int | None = None):
         yield None
         return
     with ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context(),
-                             initializer=_worker_signals) as ex:
+                             initializer=_worker_start, initargs=(os.getpid(),)) as ex:
         try:
             yield ex
         except BrokenProcessPool:
             _kill_workers(ex)
             raise
+
+
+def _worker_start(command: int) -> None:
+    """What a worker of ``--jobs`` does first: it leaves the signals that stop the command
+    to the command (:func:`_worker_signals`) and dies with it (:func:`_die_with`)."""
+    _worker_signals()
+    _die_with(command)
+
+
+def _die_with(command: int) -> None:
+    """End this process (SIGKILL) when the process ``command``, its parent, ends, however
+    it ends (Linux's ``PR_SET_PDEATHSIG``): a pool's worker otherwise outlives a command
+    killed outright (SIGKILL, the out-of-memory killer), waiting for work forever, since it
+    holds its own end of the pool's queues.  Elsewhere nothing is done."""
+    if not sys.platform.startswith("linux"):
+        return
+    import ctypes
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(_PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
+    except (OSError, AttributeError):       # no prctl to be found: as elsewhere
+        return
+    if os.getppid() != command:             # the command ended before prctl was set
+        os._exit(1)
+
+
+#: prctl's option that sends a signal to a process when its parent ends (linux/prctl.h).
+_PR_SET_PDEATHSIG = 1
 
 
 def _worker_signals():

@@ -359,6 +359,33 @@ def test_a_worker_killed_under_a_sweep_is_named_not_a_traceback(tmp_path):
     assert not out.exists()
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="PR_SET_PDEATHSIG")
+def test_the_workers_end_with_a_command_killed_outright(tmp_path):
+    """The command killed with SIGKILL (which it cannot catch: the out-of-memory killer's):
+    its workers, which would otherwise wait for work forever, end with it."""
+    import time
+    proc, _ = _running_pool(tmp_path)
+    workers = _children(proc.pid)
+    os.kill(proc.pid, 9)
+    proc.wait(timeout=60)
+    deadline = time.monotonic() + 30
+
+    def alive():                                        # neither gone nor a zombie
+        running = []
+        for pid in workers:
+            with contextlib.suppress(OSError):
+                if Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z":
+                    running.append(pid)
+        return running
+    proc.stderr.close()
+    while alive() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    left = alive()
+    for pid in left:
+        os.kill(pid, 9)
+    assert left == []
+
+
 # --------------------------------------------------------------------------
 # progress bar
 # --------------------------------------------------------------------------
