@@ -352,6 +352,11 @@ def _dask_executor(address: str):
         raise UsageError(f"--scheduler {address}: cannot connect to a Dask scheduler there "
                          f"({type(exc).__name__}: {exc})") from None
     with client:
+        if not client.nthreads():           # the sweep would wait for workers, silently
+            print(f"contact: --scheduler {address} has no workers yet: waiting for one (start "
+                  f"them with `dask worker {address}`; Ctrl-C stops)", file=sys.stderr,
+                  flush=True)
+            client.wait_for_workers(1)
         yield client.get_executor(pure=False)
 
 

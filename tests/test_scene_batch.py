@@ -403,7 +403,8 @@ def test_built_specs_are_shared():
 
 def test_separate_scheduler_and_worker_processes(tmp_path):
     """`dask scheduler` and two `dask worker` processes started as separate commands on
-    127.0.0.1, `contact run --scheduler` sent to them: the result equals the serial run."""
+    127.0.0.1, `contact run --scheduler` sent to them: the result equals the serial run.
+    The command is started before the workers: it says that it waits for them."""
     distributed = pytest.importorskip("distributed")
     import json
     import socket
@@ -421,16 +422,24 @@ def test_separate_scheduler_and_worker_processes(tmp_path):
     procs = [subprocess.Popen([str(dask_cli), "scheduler", "--host", "127.0.0.1", "--port",
                                str(port), "--dashboard-address", ":0"], **quiet)]
     try:
+        with distributed.Client(address, timeout="60s"):
+            pass                                            # the scheduler is up
+        scene = Path(contact.scene.__file__).parents[2] / "validation/scenes/fig4a_cylindrical_speed.toml"
+        err = tmp_path / "stderr.txt"
+        with open(err, "w") as fh:
+            run = subprocess.Popen([sys.executable, "-m", "contact", "run", str(scene), "--out",
+                                    str(tmp_path / "cluster"), "--quiet", "--scheduler",
+                                    address], stdout=subprocess.DEVNULL, stderr=fh)
+        procs.append(run)
+        deadline = time.monotonic() + 120
+        while "no workers yet" not in err.read_text() and run.poll() is None \
+                and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert err.read_text().startswith(f"contact: --scheduler {address} has no workers yet")
         procs += [subprocess.Popen([str(dask_cli), "worker", address, "--nworkers", "1",
                                     "--nthreads", "1", "--no-dashboard"], **quiet)
                   for _ in range(2)]
-        with distributed.Client(address, timeout="60s") as client:
-            client.wait_for_workers(2, timeout=60)
-        scene = Path(contact.scene.__file__).parents[2] / "validation/scenes/fig4a_cylindrical_speed.toml"
-        out = subprocess.run([sys.executable, "-m", "contact", "run", str(scene), "--out",
-                              str(tmp_path / "cluster"), "--quiet", "--scheduler", address],
-                             capture_output=True, text=True, timeout=300)
-        assert out.returncode == 0, out.stderr
+        assert run.wait(timeout=300) == 0, err.read_text()
     finally:
         for p in reversed(procs):
             p.terminate()
