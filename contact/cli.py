@@ -209,6 +209,10 @@ def cmd_run(args) -> int:
         messages = run.warnings                # a figure that cannot be drawn adds its own
         with _writing_into(args.out):
             written = writer.finish(run.timing_s, messages, progress=progress)
+    stale = scenes.stale_outputs(args.out, written)
+    if stale:
+        messages = [*messages, f"--out {args.out} also holds {', '.join(stale)}, which this "
+                    "run did not write (an earlier run's?)"]
     for message in messages:
         print(f"contact: warning: {message}", file=sys.stderr)
     if progress:

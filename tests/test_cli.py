@@ -18,6 +18,11 @@ import contact
 from contact import cli
 from contact.scene import FIELDS, load_scene, run_scene
 
+try:
+    from cli_helpers import run_cli
+except ImportError:  # tests/ imported as a package
+    from tests.cli_helpers import run_cli
+
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -265,6 +270,31 @@ def test_a_pool_has_no_more_workers_than_cases():
 def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
     assert cli.main(["run", "--jobs", "2", "--scheduler", "x:1", "--out", str(tmp_path)]) == 2
     assert "not both" in capsys.readouterr().err
+
+
+def test_an_earlier_runs_outputs_left_in_out_are_named(tmp_path):
+    """A run into an --out that holds an earlier run's outputs which it does not write
+    itself (the curve CSV of a field asked then, not now) names them in a warning; the
+    user's own files there are not named, and a run that rewrites every output says
+    nothing."""
+    scene = tmp_path / "s.toml"
+    text = ('title = "s"\n[material]\npreset = "zhou2014"\n[punch]\nkind = "cylindrical"\n'
+            'radius = 100.0\n[motion]\nload = 0.01\nspeed = [0.0, 0.5]\n[outputs]\n'
+            'fields = FIELDS\n')
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    (out / "pressure_fit.csv").write_text("mine")
+    scene.write_text(text.replace("FIELDS", '["ends", "pressure"]'))
+    rc, _, err = run_cli("run", scene, "--out", out, "--quiet", "--no-figures")
+    assert rc == 0 and "warning" not in err
+    rc, _, err = run_cli("run", scene, "--out", out, "--quiet", "--no-figures")
+    assert rc == 0 and "warning" not in err
+    scene.write_text(text.replace("FIELDS", '["ends"]'))
+    rc, _, err = run_cli("run", scene, "--out", out, "--quiet", "--no-figures")
+    assert rc == 0
+    assert err == (f"contact: warning: --out {out} also holds pressure.csv, which this run "
+                   "did not write (an earlier run's?)\n")
 
 
 # --------------------------------------------------------------------------

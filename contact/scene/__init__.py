@@ -162,7 +162,7 @@ file, the key and what is allowed, raised by :func:`load_scene` before anything 
 """
 from __future__ import annotations
 
-from .output import SceneWriter, check_out_dir, write_outputs
+from .output import SceneWriter, check_out_dir, stale_outputs, write_outputs
 from .summary import format_table
 from .parse import default_scene, load_scene, parse_scene_text
 from .run import (CaseResult, CaseText, SceneResult, SceneRun, SubsurfaceMap, iter_scene,
@@ -175,5 +175,5 @@ __all__ = ["SceneError", "CaseError", "Scene", "Case", "CaseResult", "CaseText",
            "MaterialSpec", "PunchSpec", "XGrid", "SubsurfaceGrid", "SubsurfaceMap", "Numerics",
            "load_scene", "parse_scene_text", "default_scene", "run_scene", "iter_scene",
            "run_case", "run_cases", "write_outputs", "SceneWriter", "check_out_dir",
-           "format_table",
+           "stale_outputs", "format_table",
            "DEFAULT_SCENE_TOML", "FIELDS", "CURVE_FIELDS"]

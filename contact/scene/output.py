@@ -272,6 +272,24 @@ def check_out_dir(out_dir) -> None:
         raise OSError(f"{out} cannot be created: {parent} is not writable")
 
 
+def stale_outputs(out_dir, written) -> list[str]:
+    """The names of the files in ``out_dir`` that a scene's run may write and this one did
+    not (``written``: its paths): an earlier run's outputs, which a reader could take for
+    this run's (the curve CSVs and figures of a field asked then, not now).  Other files
+    are not a run's and are not named."""
+    mine = {Path(p).name for p in written}
+    return sorted(p.name for p in Path(out_dir).iterdir()
+                  if p.name not in mine and p.is_file() and _written_by_a_run(p.name))
+
+
+def _written_by_a_run(name: str) -> bool:
+    """Whether :meth:`SceneWriter.finish` writes files of this name for some scene."""
+    stem, _, suffix = name.rpartition(".")
+    return (name in ("result.json", "sweep.csv", "subsurface.npz", "subsurface.csv")
+            or (suffix in ("csv", "png") and stem in CURVE_FIELDS)
+            or (suffix == "png" and stem.startswith("subsurface_")))
+
+
 class ResultJson:
     """result.json written case by case: the text :func:`dumps_json` gives
     :meth:`SceneResult.to_json` (the keys after ``cases`` -- version, timing_s, units,
