@@ -314,6 +314,52 @@ def test_workers_of_their_own_get_a_first_chunk_each_then_sized_ones(monkeypatch
     assert max(sizes) > 3
 
 
+class _GrowingCluster:
+    """A Dask client's executor in miniature: its workers are 16 threads, counted by its
+    client's ``nthreads()``, which reports one worker at the first count and all 16 after
+    (a cluster that grows while the sweep runs); records how many chunks ran at once."""
+
+    def __init__(self):
+        import threading
+        self._pool = ThreadPoolExecutor(16)
+        self._client = self
+        self._lock = threading.Lock()
+        self.counts = self.running = self.most_running = 0
+
+    def nthreads(self):
+        self.counts += 1
+        return {f"worker-{k}": 1 for k in range(1 if self.counts == 1 else 16)}
+
+    def submit(self, fn, *args):
+        def tracked():
+            with self._lock:
+                self.running += 1
+                self.most_running = max(self.most_running, self.running)
+            try:
+                return fn(*args)
+            finally:
+                with self._lock:
+                    self.running -= 1
+        return self._pool.submit(tracked)
+
+
+def test_a_cluster_that_grows_during_the_sweep_gets_work_for_all_its_workers(monkeypatch):
+    """The sweep starts on a cluster of one worker, which then has 16: they are counted again
+    as chunks come back, and more than the 8 chunks that one worker is handed ahead run at
+    once; every case delivered in order."""
+    monkeypatch.setattr(batch, "RECOUNT_S", 0.0)
+
+    def solve(cases):
+        time.sleep(2e-3 * len(cases))
+        return [c.index for c in cases]
+    ex = _GrowingCluster()
+    with ex._pool:
+        got = list(batch.iter_chunked(solve, fake_cases(2000, speeds=(0.0,)), ex,
+                                      lambda k: None))
+    assert got == [(i, i) for i in range(2000)]
+    assert ex.counts >= 2 and ex.most_running > batch.CHUNKS_AHEAD
+
+
 def _sweep():
     return load_scene(contact.scene.__file__.replace("__init__.py", "") +
                       "../../validation/scenes/fig4a_cylindrical_speed.toml")

@@ -58,6 +58,9 @@ RESULT_PIPE_BYTES = 1 << 20
 #: Most cases per chunk without an executor (solved together, delivered in order): a sweep
 #: of any length runs in memory for this many results.
 SERIAL_CHUNK = 256
+#: Seconds between two counts of a Dask cluster's workers during a sweep (a cluster grows and
+#: shrinks; asking costs a round trip to its scheduler).
+RECOUNT_S = 1.0
 
 
 @functools.lru_cache(maxsize=64)
@@ -329,7 +332,11 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
     (solved here, in a process that may still be warming up: an upper bound), lowered to
     what each finished chunk took in its worker, and the chunks sized again; None when
     nothing was solved here: a first chunk of ``_PROBE // 2`` cases for each worker (which
-    warms it up), and no more until one of them comes back."""
+    warms it up), and no more until one of them comes back.  ``workers``: how many run at
+    once; a Dask cluster's are counted again every ``RECOUNT_S`` as chunks come back
+    (workers that join an adaptive cluster, or start after the sweep, get work too)."""
+    recount = _dask_client(executor) is not None
+    counted = time.monotonic()
     left = max(total - start, 1)
     if per_case is None:                # infinite until a chunk comes back
         per_case, size = math.inf, max(1, _PROBE // 2)
@@ -369,6 +376,13 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
                     size = chunk_size(left, workers, per_case)
                 if chunk.failed is not None:
                     failed = min(failed, chunk.failed)
+            if recount and time.monotonic() - counted >= RECOUNT_S:
+                counted = time.monotonic()
+                now = worker_count(executor)
+                if now != workers:
+                    workers = now
+                    if math.isfinite(per_case):
+                        size = chunk_size(left, workers, per_case)
             for fut, first in list(running.items()):
                 if first > failed and fut.cancel():
                     del running[fut]
