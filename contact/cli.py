@@ -361,7 +361,42 @@ def _dask_executor(address: str):
                   f"them with `dask worker {address}`; Ctrl-C stops)", file=sys.stderr,
                   flush=True)
             client.wait_for_workers(1)
-        yield client.get_executor(pure=False)
+        with _watching_workers(client, address):
+            yield client.get_executor(pure=False)
+
+
+#: Seconds between two looks at a cluster's workers during a sweep (:func:`_watching_workers`).
+WATCH_S = 2.0
+
+
+@contextlib.contextmanager
+def _watching_workers(client, address: str):
+    """Say when the cluster has lost every worker during the sweep (a cluster waits for new
+    ones, and the sweep with it, without a word otherwise: workers ended by a batch system, a
+    machine lost) and when it has workers again: a thread looks every ``WATCH_S``."""
+    import threading
+    stop = threading.Event()
+
+    def watch():
+        without = False
+        while not stop.wait(WATCH_S):
+            try:
+                none = not client.nthreads()
+            except Exception:               # the client has closed: the sweep says so
+                return
+            if none and not without:
+                print(f"contact: warning: --scheduler {address} has no workers left: the "
+                      "sweep waits for new ones (Ctrl-C stops)", file=sys.stderr, flush=True)
+            elif without and not none:
+                print(f"contact: --scheduler {address} has workers again", file=sys.stderr,
+                      flush=True)
+            without = none
+    watcher = threading.Thread(target=watch, name="contact-workers-watch", daemon=True)
+    watcher.start()
+    try:
+        yield
+    finally:
+        stop.set()
 
 
 # --------------------------------------------------------------------------

@@ -272,6 +272,52 @@ def test_jobs_and_scheduler_together_are_refused(capsys, tmp_path):
     assert "not both" in capsys.readouterr().err
 
 
+def test_a_cluster_that_loses_every_worker_during_a_sweep_is_said(tmp_path):
+    """A LocalCluster that loses its only worker while `contact run --scheduler` runs on it:
+    the command says that the sweep waits for new workers, and says so again when one has
+    joined; Ctrl-C then stops it."""
+    distributed = pytest.importorskip("distributed")
+    import signal
+    import time
+    err_path, out = tmp_path / "stderr.txt", tmp_path / "out"
+
+    def said(text, within=60):
+        deadline = time.monotonic() + within
+        while text not in err_path.read_text() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        return text in err_path.read_text()
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1,
+                                  dashboard_address=":0") as cluster:
+        address = cluster.scheduler_address
+        child = ("import sys, contact.cli\ncontact.cli.WATCH_S = 0.2\n"
+                 f"sys.exit(contact.cli.main(['run', {str(_endless_sweep(tmp_path))!r}, "
+                 f"'--quiet', '--no-figures', '--scheduler', {address!r}, '--out', "
+                 f"{str(out)!r}]))\n")
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+        with open(err_path, "w") as err:
+            proc = subprocess.Popen([sys.executable, "-c", child], env=env, stderr=err,
+                                    start_new_session=True,
+                                    preexec_fn=lambda: signal.signal(signal.SIGINT,
+                                                                     signal.SIG_DFL))
+        try:
+            deadline = time.monotonic() + 60                # the sweep's chunks reach it
+            while not cluster.scheduler.tasks and time.monotonic() < deadline:
+                time.sleep(0.05)
+            cluster.scale(0)
+            assert said(f"contact: warning: --scheduler {address} has no workers left: the "
+                        "sweep waits for new ones (Ctrl-C stops)"), err_path.read_text()
+            cluster.scale(1)
+            assert said(f"contact: --scheduler {address} has workers again"), \
+                err_path.read_text()
+            os.killpg(proc.pid, signal.SIGINT)
+            assert proc.wait(timeout=60) == 130
+        finally:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(proc.pid, 9)
+    assert err_path.read_text().endswith("contact: error: interrupted\n")
+
+
 def test_an_earlier_runs_outputs_left_in_out_are_named(tmp_path):
     """A run into an --out that holds an earlier run's outputs which it does not write
     itself (the curve CSV of a field asked then, not now) names them in a warning; the

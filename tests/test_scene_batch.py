@@ -360,6 +360,32 @@ def test_a_cluster_that_grows_during_the_sweep_gets_work_for_all_its_workers(mon
     assert ex.counts >= 2 and ex.most_running > batch.CHUNKS_AHEAD
 
 
+class _ClosedClient:
+    """A Dask client's executor whose client has closed (its scheduler gone): what it was
+    handed never comes back."""
+    status = "closed"
+    scheduler = namedtuple("Rpc", "address")("tcp://10.0.0.1:8786")
+
+    def __init__(self):
+        self._client = self
+
+    def nthreads(self):
+        return {"worker-0": 1}
+
+    def submit(self, fn, *args):
+        from concurrent.futures import Future
+        return Future()                                 # never done
+
+
+def test_a_cluster_whose_client_has_closed_ends_the_sweep_with_its_address(monkeypatch):
+    """Chunks handed to a Dask client that has lost its scheduler never come back: the sweep
+    looks at the client when none has come back for WAIT_S and ends with a ConnectionError
+    naming the scheduler, instead of waiting forever."""
+    monkeypatch.setattr(batch, "WAIT_S", 0.01)
+    with pytest.raises(ConnectionError, match="lost the Dask scheduler at tcp://10.0.0.1:8786"):
+        list(batch.iter_chunked(indices, fake_cases(40), _ClosedClient(), lambda k: None))
+
+
 def _sweep():
     return load_scene(contact.scene.__file__.replace("__init__.py", "") +
                       "../../validation/scenes/fig4a_cylindrical_speed.toml")

@@ -61,6 +61,9 @@ SERIAL_CHUNK = 256
 #: Seconds between two counts of a Dask cluster's workers during a sweep (a cluster grows and
 #: shrinks; asking costs a round trip to its scheduler).
 RECOUNT_S = 1.0
+#: Longest wait for a chunk before the executor is looked at: a Dask client whose scheduler
+#: is gone closes, and its chunks never come back.
+WAIT_S = 5.0
 
 
 @functools.lru_cache(maxsize=64)
@@ -288,6 +291,17 @@ def widen_result_pipe(executor) -> int | None:
         return None
 
 
+def _check_client(executor) -> None:
+    """Raise ConnectionError if ``executor`` is a Dask client's that has closed (it lost its
+    scheduler and did not reconnect): the chunks handed to it will not come back."""
+    client = _dask_client(executor)
+    if client is not None and getattr(client, "status", None) in ("closing", "closed"):
+        address = getattr(getattr(client, "scheduler", None), "address", "?")
+        raise ConnectionError(f"lost the Dask scheduler at {address}: its client has closed "
+                              "(the scheduler stopped, or the network failed); the cases not "
+                              "yet back are not solved")
+
+
 def _warms_workers(executor) -> bool:
     """Whether warming this process up warms the executor's workers too: they are its
     threads or its forks (a pool of the "fork" start method, made after the warm-up), or
@@ -362,7 +376,9 @@ def _windowed(fn, source, executor, start, total, per_case, workers, on_done):
                 delivered = items[-1][0] + 1
             if delivered >= next_start:
                 continue                    # all handed out so far delivered: hand out more
-            finished, _ = wait(running, return_when=FIRST_COMPLETED)
+            finished, _ = wait(running, timeout=WAIT_S, return_when=FIRST_COMPLETED)
+            if not finished:
+                _check_client(executor)
             for fut in finished:
                 first = running.pop(fut)
                 if fut.cancelled():
