@@ -212,7 +212,9 @@ def iter_chunks(fn, source, executor, on_done):
     full chunks per worker past the first case not yet delivered (a process pool's result
     pipe first widened to hold a chunk: :func:`widen_result_pipe`).  Once a case fails, the
     chunks after it are cancelled and those before it awaited.  ``on_done(k)`` is called as
-    k cases finish.
+    k cases finish.  A Dask client that has closed meanwhile (its scheduler lost) is a
+    ConnectionError (:func:`_check_client`), looked for when no chunk has come back for
+    ``WAIT_S``.
     """
     total = source.case_count
     if executor is None or total < 2:
