@@ -411,7 +411,7 @@ def processes_alone(text, cases=CEILING_CASES, seconds=CEILING_S):
                   for s in range(first, first + length, chunk)]
 
         def alone(n):
-            ready = ctx.Barrier(n)
+            ready = ctx.Barrier(n, timeout=120)     # a process that never comes ends them
             pipes = [ctx.Pipe(duplex=False) for _ in range(n)]
             procs = [ctx.Process(target=_solve_alone,
                                  args=(fn, scene, chunks, seconds, ready, send))
