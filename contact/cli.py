@@ -229,6 +229,9 @@ def _writing_into(out):
         raise OSError(f"cannot write the outputs into --out {out}: {exc}") from None
 
 
+# --------------------------------------------------------------------------
+# contact run: where its cases are solved (here, a pool of forked workers, a Dask cluster)
+# --------------------------------------------------------------------------
 def usable_cpus() -> int:
     """The CPUs this process may run on: its affinity mask where the platform keeps one (the
     share of the machine that a container's cpuset or ``taskset`` gives it, which
