@@ -173,6 +173,7 @@ def console():
     """
     signal.signal(signal.SIGTERM, _raise_terminated)
     status = main()
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)       # main is done: nothing left to stop
     gc.freeze()
     sys.exit(status)
 
