@@ -19,19 +19,16 @@ from contact import cli
 from contact.scene import FIELDS, load_scene, run_scene
 
 try:
-    from cli_helpers import run_cli
+    from cli_helpers import child_env, run_cli
 except ImportError:  # tests/ imported as a package
-    from tests.cli_helpers import run_cli
+    from tests.cli_helpers import child_env, run_cli
 
 SCENES = Path(__file__).resolve().parents[1] / "validation" / "scenes"
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def contact_command(*args, cwd):
     """Run ``python -m contact ARGS`` in ``cwd``; the project is importable from anywhere."""
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
-    return subprocess.run([sys.executable, "-m", "contact", *args], cwd=cwd, env=env,
+    return subprocess.run([sys.executable, "-m", "contact", *args], cwd=cwd, env=child_env(),
                           capture_output=True, text=True, timeout=300)
 
 
@@ -198,10 +195,8 @@ def test_a_moving_sweep_runs_without_the_heavy_scipy_subpackages(tmp_path):
              f"status = contact.cli.main(['run', {str(scene)!r}, '--out', "
              f"{str(tmp_path / 'out')!r}, '--quiet', '--no-figures'])\n"
              f"print(status, [m for m in {_HEAVY_AT_START!r} if m in sys.modules])\n")
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
-    proc = subprocess.run([sys.executable, "-c", child], env=env, capture_output=True,
-                          text=True, timeout=300)
+    proc = subprocess.run([sys.executable, "-c", child], env=child_env(),
+                          capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert proc.stdout.split("\n")[-2] == "0 []"
     assert len(cases_of(tmp_path / "out" / "result.json")) == 6
@@ -236,8 +231,6 @@ def test_jobs_counts_the_cpus_this_process_may_use(tmp_path):
                      'kind = "cylindrical"\nradius = 100.0\n[motion]\nload = 0.01\n'
                      'speed = [0.0, 0.5]\nfriction = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, '
                      '0.8, 0.9]\n[outputs]\nfields = ["ends"]\n')
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
     outs = {}
     for jobs in ("0", "2"):
         child = ("import os, sys, concurrent.futures as cf, contact.cli\n"
@@ -249,8 +242,8 @@ def test_jobs_counts_the_cpus_this_process_may_use(tmp_path):
                  f"status = contact.cli.main(['run', {str(scene)!r}, '--jobs', {jobs!r}, "
                  f"'--out', {str(tmp_path / jobs)!r}, '--quiet', '--no-figures'])\n"
                  "print(status, pools)\n")
-        proc = subprocess.run([sys.executable, "-c", child], env=env, capture_output=True,
-                              text=True, timeout=300)
+        proc = subprocess.run([sys.executable, "-c", child], env=child_env(),
+                              capture_output=True, text=True, timeout=300)
         assert proc.returncode == 0, proc.stderr[-3000:]
         outs[jobs] = proc
     assert outs["0"].stdout.split("\n")[-2] == "0 []" and "warning" not in outs["0"].stderr
@@ -293,10 +286,8 @@ def test_a_cluster_that_loses_every_worker_during_a_sweep_is_said(tmp_path):
                  f"sys.exit(contact.cli.main(['run', {str(_endless_sweep(tmp_path))!r}, "
                  f"'--quiet', '--no-figures', '--scheduler', {address!r}, '--out', "
                  f"{str(out)!r}]))\n")
-        env = dict(os.environ)
-        env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
         with open(err_path, "w") as err:
-            proc = subprocess.Popen([sys.executable, "-c", child], env=env, stderr=err,
+            proc = subprocess.Popen([sys.executable, "-c", child], env=child_env(), stderr=err,
                                     start_new_session=True,
                                     preexec_fn=lambda: signal.signal(signal.SIGINT,
                                                                      signal.SIG_DFL))
@@ -378,11 +369,10 @@ def _running_pool(tmp_path, jobs=2):
     import signal
     import time
     out = tmp_path / "out"
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
     proc = subprocess.Popen([sys.executable, "-m", "contact", "run", str(_endless_sweep(tmp_path)),
                              "--quiet", "--no-figures", "--jobs", str(jobs), "--out", str(out)],
-                            env=env, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            env=child_env(), stderr=subprocess.PIPE, text=True,
+                            start_new_session=True,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 120
     while len(_children(proc.pid)) < jobs and time.monotonic() < deadline:

@@ -13,7 +13,6 @@ import contextlib
 import csv
 import itertools
 import json
-import os
 import subprocess
 import sys
 import textwrap
@@ -38,9 +37,9 @@ from contact.scene.output import dumps_json
 from contact.scene.summary import TABLE_ROWS, table_cell
 
 try:
-    from cli_helpers import run_cli
+    from cli_helpers import child_env, run_cli
 except ImportError:  # tests/ imported as a package
-    from tests.cli_helpers import run_cli
+    from tests.cli_helpers import child_env, run_cli
 
 ROOT = Path(__file__).resolve().parents[1]
 FakeCase = namedtuple("FakeCase", "index material speed inputs")
@@ -479,10 +478,8 @@ def test_memory_does_not_grow_with_the_sweep(tmp_path):
     a fresh interpreter: in the one running the whole suite, what other tests left behind
     (threads of a Dask cluster, caches, the collector's state) moved both streamed peaks by
     70-130 kB once."""
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
     proc = subprocess.run([sys.executable, "-c", _PEAKS_CHILD, str(ROOT / "tests"),
-                           str(tmp_path)], env=env, capture_output=True, text=True,
+                           str(tmp_path)], env=child_env(), capture_output=True, text=True,
                           timeout=300)
     assert proc.returncode == 0, proc.stderr[-3000:]
     small, large, kept_small, kept_large = json.loads(proc.stdout.splitlines()[-1])
