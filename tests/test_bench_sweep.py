@@ -109,18 +109,31 @@ def test_a_process_alone_counts_the_cases_of_its_seconds_alone(monkeypatch):
     """_solve_alone on cases of 2 ms each (on a clock that the cases move), in chunks of 15
     (30 ms), for 0.1 s: 50 cases, the chunk running at the end counted for the third of it
     inside the 0.1 s (whole chunks would give 45 or 60), the chunks taken over again once
-    both are done."""
+    both are done; the first chunk solved once before the barrier, outside the count."""
     clock = [100.0]
     monkeypatch.setattr(bench_sweep, "time", types.SimpleNamespace(perf_counter=lambda: clock[0]))
+    solved = []
 
     def two_ms_each(cases):
         clock[0] += 2e-3 * len(cases)
+        solved.append((cases[0].index, len(cases)))
         return [None] * len(cases)
+    at_barrier = []
     sent = []
     bench_sweep._solve_alone(two_ms_each, _Cases(), [(0, 15), (100, 115)], 0.1,
-                             threading.Barrier(1),
+                             types.SimpleNamespace(wait=lambda: at_barrier.append(len(solved))),
                              types.SimpleNamespace(send=sent.append, close=lambda: None))
+    assert at_barrier == [1] and solved[0] == (0, 15)
     assert sent == [pytest.approx(50.0, rel=1e-9)]
+    assert solved[1:] == [(0, 15), (100, 15), (0, 15), (100, 15)]
+
+
+def test_a_ceiling_over_n_times_one_process_is_called_the_machine_drifting():
+    """N processes at more than N times one process: only the machine's speed changing
+    between the two readings makes that, and the row says so; at or under N it says
+    nothing."""
+    assert bench_sweep._beyond(16, 16.0) == "" and bench_sweep._beyond(2, 1.98) == ""
+    assert "slower spell" in bench_sweep._beyond(16, 18.25)
 
 
 @pytest.mark.parametrize("argv", [["--cli", "--repeats", "0"], ["--cli", "--repeats"],
