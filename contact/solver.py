@@ -25,8 +25,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 import sie
-
+from sie import N_MAX
 from sie.assembly import N_MAX_DENSE
+from sie.exponents import MIN_B_OVER_A, check_coefficients
 
 from .constants import SurfaceConstants, surface_constants
 from .continuation import ZoneState, follow_load, inspect_state
@@ -70,8 +71,9 @@ def _check_inputs(material, punch, load, speed, friction, direction, method, n, 
     if method not in ("numeric", "closed_form"):
         raise ContactInputError(f'method must be "numeric" or "closed_form", got {method!r}')
     if n is not None:
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2 or n > 100_000:
-            raise ContactInputError(f"n must be an integer in [2, 100000] or None, got {n!r}")
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= N_MAX:
+            raise ContactInputError(f"n must be an integer in [2, {N_MAX}] (Jacobi coefficients "
+                                    f"per zone, sie.N_MAX at most) or None, got {n!r}")
     tol = check_finite("tol", tol, ContactInputError)
     if not 0 < tol < 1:
         raise ContactInputError(f"tol must be in (0, 1), got {tol!r}")
@@ -170,7 +172,7 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
     const = _surface_constants(material, speed, constants)
-    mu_f = -direction * friction if friction != 0.0 else 0.0
+    mu_f = _signed_friction(const, friction, direction)
     if method == "closed_form":
         return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f,
                                    material)
@@ -268,7 +270,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 const = shared.get(key)
                 if const is None:
                     const = shared[key] = surface_constants(material, Vi)
-            mu_f = -Di * Mi if Mi != 0.0 else 0.0
+            mu_f = _signed_friction(const, Mi, Di)
             if method == "closed_form":
                 out[i] = _closed_form_result(const, punch, Pi, float(Vi), Mi, Di, mu_f,
                                              material)
@@ -345,6 +347,26 @@ def _gc_in_forked_child():
 
 if hasattr(os, "register_at_fork"):                 # POSIX; elsewhere processes are spawned
     os.register_at_fork(after_in_child=_gc_in_forked_child)
+
+
+def _signed_friction(const, friction, direction) -> float:
+    """mu_f = -direction * friction (0 without friction: no friction terms), refused where
+    it makes the coefficient N12 mu_f of the equation so large against N11 that an end
+    exponent of the pressure rounds to -1 or 1 (:func:`sie.exponents.check_coefficients`)."""
+    if friction == 0.0:
+        return 0.0
+    mu_f = -direction * friction
+    try:
+        check_coefficients(const.N12 * mu_f, const.N11)
+    except sie.InvalidCoefficientError:
+        limit = MIN_B_OVER_A ** -1 * abs(const.N11 / const.N12)
+        raise FrictionError(
+            f"friction = {friction!r} puts an end exponent of the pressure within rounding "
+            f"of -1 or 1 in double precision (|N12 friction / N11| = "
+            f"{abs(const.N12 * friction / const.N11):.3g}): its singularity is not "
+            f"integrable there (allowed: friction below about {limit:.3g} for this material "
+            f"at this speed; Coulomb coefficients of real materials are below ~10)") from None
+    return mu_f
 
 
 @dataclass(frozen=True)
@@ -508,7 +530,7 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
         raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {P[i]!r} and "
                         f"loads[{i + 1}] = {P[i + 1]!r}")
     const = _surface_constants(material, speed, constants)
-    mu_f = -direction * friction if friction != 0.0 else 0.0
+    mu_f = _signed_friction(const, friction, direction)
     return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol,
                     material)
 

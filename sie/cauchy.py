@@ -152,8 +152,9 @@ def _end_offsets(z, ends):
 
 def f0_parameters(wt: Weight, shifted=False):
     """Parameters of the closed form of F_0 for the compiled kernels
-    (:func:`sie.cauchy_kernels._f0`): m, alpha, 1 - alpha, sin(pi alpha), shifted, and for
-    the shifted weight M_1 = int w u = mu_0 (beta - alpha)/(alpha + beta + 2) and mu_0."""
+    (:func:`sie.cauchy_kernels._f0`): m, alpha, 1 - alpha, sin(pi alpha), shifted, for
+    the shifted weight M_1 = int w u = mu_0 (beta - alpha)/(alpha + beta + 2) and mu_0, and
+    1 + alpha."""
     return np.array(f0_parameter_row(wt.m, wt.alpha, wt.alpha_m1, wt.sin, wt.alpha_p1,
                                      wt.beta_p1, wt.mu0, shifted))
 
@@ -161,7 +162,7 @@ def f0_parameters(wt: Weight, shifted=False):
 def f0_parameter_row(m, alpha, alpha_m1, sin, alpha_p1, beta_p1, mu0, shifted=False):
     """:func:`f0_parameters` from the weight's numbers (a row per weight of a batch)."""
     m1 = mu0 * (beta_p1 - alpha_p1) / (alpha_p1 + beta_p1)
-    return [float(m), alpha, alpha_m1, sin, float(shifted), m1, mu0]
+    return [float(m), alpha, alpha_m1, sin, float(shifted), m1, mu0, alpha_p1]
 
 
 def _writeable(x, dtype=float):

@@ -22,7 +22,7 @@ ordered by their start K so that a lane group shares it).
 The points come with z - 1 and z + 1 (``zm1``, ``zp1``) formed by the caller from the real
 coordinate, so that the distance to a nearby end keeps full relative precision in F_0.
 ``p`` holds the closed form's parameters (see :func:`f0_parameters` in :mod:`sie.cauchy`):
-m = alpha + beta, alpha, 1 - alpha, sin(pi alpha), shifted (0/1), M_1, mu_0.
+m = alpha + beta, alpha, 1 - alpha, sin(pi alpha), shifted (0/1), M_1, mu_0, 1 + alpha.
 """
 from __future__ import annotations
 
@@ -59,7 +59,14 @@ def _f0(z, zm1, zp1, p):
         m =  1:  F_0 = [(z+1) expm1(alpha L) + 2 alpha] / sin(pi alpha)        (alpha <= 1/2)
                      = [(z-1) expm1(-(1-alpha) L) - 2 (1-alpha)] / sin(pi alpha)  (alpha > 1/2).
     Shifted (the weight with both exponents raised by one): (1 - z^2) F_0 - (M_1 + z mu_0)/pi,
-    where (1 - z^2) F_0 -> 0 at an end."""
+    where (1 - z^2) F_0 -> 0 at an end.
+
+    sin(pi alpha) is exact (``p[3]``), and so must be the part of e^{alpha L} that it
+    divides: on the cut, Im e^{alpha L} = e^{alpha Re L} sin(pi alpha) made from alpha as
+    rounded, whose distance to an integer r = +-1 has an absolute error of half an ulp, a
+    relative error of ~1e-16 / |alpha - r| (2e-4 at |alpha - r| = 3e-13).  Near r = +-1,
+    e^{alpha L} = ((z-1)/(z+1))^r e^{(alpha - r) L} with alpha - r carried exactly (1 + alpha,
+    ``p[7]``; -(1 - alpha), ``p[2]``) instead."""
     m, alpha, am1, sn = p[0], p[1], p[2], p[3]
     at_end = zm1 == 0.0 or zp1 == 0.0
     f0 = 0j
@@ -68,14 +75,19 @@ def _f0(z, zm1, zp1, p):
             L = complex(math.log(-zm1.real) - math.log(zp1.real), math.pi)
         else:
             L = cmath.log(zm1 / zp1)
-        if m < -0.5:
-            num = cmath.exp(alpha * L) / zp1
-        elif m < 0.5:
-            num = _expm1c(alpha * L)
-        elif alpha <= 0.5:
-            num = zp1 * _expm1c(alpha * L) + 2.0 * alpha
+        if m > 0.5:
+            if alpha <= 0.5:
+                num = zp1 * _expm1c(alpha * L) + 2.0 * alpha
+            else:
+                num = zm1 * _expm1c(-am1 * L) - 2.0 * am1
+        elif abs(alpha) <= 0.5:
+            num = cmath.exp(alpha * L) / zp1 if m < -0.5 else _expm1c(alpha * L)
         else:
-            num = zm1 * _expm1c(-am1 * L) - 2.0 * am1
+            if alpha < 0.0:                  # e^{alpha L} = e^{(1 + alpha) L} (z+1)/(z-1)
+                e = cmath.exp(p[7] * L) * (zp1 / zm1)
+            else:                            # e^{alpha L} = e^{-(1 - alpha) L} (z-1)/(z+1)
+                e = cmath.exp(-am1 * L) * (zm1 / zp1)
+            num = e / zp1 if m < -0.5 else e - 1.0
         f0 = num / sn
     if p[4] != 0.0:
         return -(zm1 * zp1) * f0 - (p[5] + z * p[6]) / math.pi

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from .errors import InvalidCoefficientError, InvalidEndConditionError, check_finite_real
 
 __all__ = ["Exponents", "sie_exponents", "exponents_of", "check_coefficients", "check_end",
-           "END_CHOICES"]
+           "END_CHOICES", "MIN_B_OVER_A"]
 
 END_CHOICES = ("bounded", "singular")
 
@@ -88,7 +88,8 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
     Raises
     ------
     InvalidCoefficientError
-        a or b not a finite real number, or b = 0.
+        a or b not a finite real number, b = 0, or |b/a| < :data:`MIN_B_OVER_A` (an end
+        exponent within rounding of -1 or 1).
     InvalidEndConditionError
         left or right not "bounded" or "singular".
 
@@ -115,13 +116,29 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
     return exponents_of(a, b, check_end("left", left), check_end("right", right))
 
 
+#: About the smallest |b/a| that double precision resolves: below it alpha0 (cot(pi alpha0)
+#: = -a/b, alpha0 ~ |b/a| / pi) or 1 - alpha0, as :func:`exponents_of` computes it from
+#: atan2, rounds to 1, and an end exponent to -1 or 1 (the exact bound, ~3.4e-16, is where
+#: that rounding happens; :func:`check_coefficients` tests the rounding itself).
+MIN_B_OVER_A = math.pi * 2.0 ** -53
+
+
 def check_coefficients(a, b) -> tuple[float, float]:
-    """(a, b) as floats: finite reals with b != 0, else InvalidCoefficientError."""
+    """(a, b) as floats: finite reals with b != 0 and |b/a| resolved in double precision
+    (:data:`MIN_B_OVER_A`), else InvalidCoefficientError."""
     a = check_finite_real("a", a, InvalidCoefficientError)
     b = check_finite_real("b", b, InvalidCoefficientError)
     if b == 0.0:
         raise InvalidCoefficientError(
             "b must be nonzero (b = 0 leaves no singular integral: the equation is not a Cauchy SIE)")
+    y = -a / b                   # as exponents_of forms alpha0 and 1 - alpha0 from it
+    if not (math.isfinite(y) and math.atan2(1.0, y) / math.pi < 1.0
+            and math.atan2(1.0, -y) / math.pi < 1.0):
+        raise InvalidCoefficientError(
+            f"|b/a| = {abs(b) / abs(a):.3g} (a = {a!r}, b = {b!r}) is too small for double "
+            f"precision: alpha0 (cot(pi alpha0) = -a/b) is within rounding of 0 or 1, so that "
+            f"an end exponent rounds to -1 or 1 (allowed: |b/a| above about "
+            f"{MIN_B_OVER_A:.2g})")
     return a, b
 
 

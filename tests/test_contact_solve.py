@@ -28,6 +28,7 @@ import pytest
 from scipy.integrate import quad
 
 import contact
+import sie
 from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, hyperbolic_tip_slope,
                                  rounded_flat_slope, w_slope)
 from validation.sampling import S40, interior, outside
@@ -385,6 +386,49 @@ def test_bad_friction(mu, match):
 def test_bad_direction(direction):
     with pytest.raises(contact.DirectionError, match="direction must be -1"):
         contact.solve(MAT, FLAT, load=1.0, speed=0.3, friction=0.1, direction=direction)
+
+
+@pytest.mark.parametrize("friction", [1e4, 1e12, 1e15])
+@pytest.mark.parametrize("direction", [-1, 1])
+def test_a_flat_punch_at_a_huge_friction_keeps_every_digit(friction, direction):
+    """Friction far beyond any material's puts an end exponent within 2e-15 of -1: the
+    pressure still matches Zhou et al. 2014, eqs. (5.6)-(5.8), p = P sin(pi alpha0)/(pi a)
+    (1 - X/a)^(alpha0 - 1) (1 + X/a)^(-alpha0), with cot(pi alpha0) = -mu_f N12 / N11,
+    mu_f = -direction friction, in 40 digits, to 5e-14; and the residual diagnostic
+    says so (it reported 2e-2 at 1e15 where the transform used the exponent as rounded)."""
+    from mpmath import mp
+    mp.dps = 40
+    r = contact.solve(MAT, FLAT, load=0.01, speed=0.3, friction=friction, direction=direction)
+    k = r.constants
+    alpha0 = mp.atan2(1, mp.mpf(direction) * friction * mp.mpf(k.N12) / mp.mpf(k.N11)) / mp.pi
+    X = np.array([-0.9, -0.5, 0.0, 0.5, 0.9])
+    for x, got in zip(X, r.pressure(X)):
+        s = mp.mpf(x)
+        ref = 0.01 * mp.sin(mp.pi * alpha0) / mp.pi * (1 - s) ** (alpha0 - 1) * (1 + s) ** -alpha0
+        assert abs(got / ref - 1) < 5e-14
+    assert r.residual < 1e-14
+
+
+def test_a_friction_that_rounds_an_exponent_to_minus_one_is_refused():
+    """friction 1e17 puts 1 + alpha at 2e-17, under the rounding of -1: refused as a friction
+    error saying how far friction may go, on every path (it gave a residual of 0.96 and no
+    word, and the closed form a math domain error)."""
+    for method in ("numeric", "closed_form"):
+        with pytest.raises(contact.FrictionError, match="within rounding of -1 or 1"):
+            contact.solve(MAT, FLAT, load=0.01, speed=0.3, friction=1e17, method=method)
+    ok, bad = contact.solve_batch(MAT, FLAT, load=0.01, speed=0.3, friction=[0.3, 1e17],
+                                  errors="return")
+    assert isinstance(bad, contact.FrictionError) and ok.alpha < 0
+    with pytest.raises(contact.FrictionError, match="friction below about"):
+        contact.load_curve(MAT, FLAT, loads=[0.01, 0.02], speed=0.3, friction=1e17)
+
+
+@pytest.mark.parametrize("n", [1, sie.N_MAX + 1, 2.0, True])
+def test_a_fixed_n_outside_what_the_solver_takes_is_refused_before_solving(n):
+    """n is the Jacobi coefficients per zone: 2 up to sie.N_MAX, the largest the SIE solver
+    takes, refused here before any root or constant is computed."""
+    with pytest.raises(contact.ContactInputError, match=rf"\[2, {sie.N_MAX}\]"):
+        contact.solve(MAT, FLAT, load=1.0, speed=0.3, n=n)
 
 
 @pytest.mark.parametrize("make, match", [

@@ -255,7 +255,9 @@ BAD = {
                       ["outputs.fields[1]", "did you mean 'sigma_xx'", "allowed"]),
     "bad-x": (CYL + MOTION + "[outputs]\nx = { start = 1.0, stop = 0.0, num = 10 }\n",
               ["outputs.x", "not below"]),
-    "bad-n": (CYL + MOTION + "[numerics]\nn = 1\n", ["numerics.n", "[2, 100000]"]),
+    "bad-n": (CYL + MOTION + "[numerics]\nn = 1\n", ["numerics.n", "[2, 20000]"]),
+    "n-over-the-solver's": (CYL + MOTION + "[numerics]\nn = 20001\n",
+                            ["numerics.n", "[2, 20000]", "per zone"]),
     "n-and-tol": (CYL + MOTION + "[numerics]\nn = 16\ntol = 1e-8\n", ["numerics.n", "tol"]),
     "closed-form-profile": (HEAD + '[punch]\nkind = "profile"\nslope = [0.0, 0.01]\n' + MOTION
                             + '[numerics]\nmethod = "closed_form"\n',
@@ -499,6 +501,51 @@ def test_near_rayleigh_warning_is_collected_not_printed(recwarn):
     res = run_scene(s)
     assert any("NearRayleighWarning" in w for w in res.warnings)
     assert not [w for w in recwarn if issubclass(w.category, contact.NearRayleighWarning)]
+
+
+NEAR_RAYLEIGH_SWEEP = CYL + """[motion]
+load = [0.005, 0.01]
+speed = [0.3, 0.99, 0.6, 0.993]
+friction = [0.0, 0.1, 0.3]
+"""
+
+
+def _near_rayleigh(messages):
+    return [m for m in messages if "NearRayleighWarning" in m]
+
+
+def test_a_speed_near_rayleigh_is_warned_once_for_the_run_in_any_run():
+    """The surface constants' warning belongs to the material at a speed: each near-Rayleigh
+    speed of a sweep is warned once, naming its speed and no case, in scene order; and so is
+    it again in a second run of the same process, whose constants are cached (a warning
+    kept only where they were first computed would be lost there)."""
+    s = scene(NEAR_RAYLEIGH_SWEEP)
+    first, again = run_scene(s), run_scene(s)
+    near = _near_rayleigh(first.warnings)
+    assert [m.split("c = ")[1].split(" ")[0] for m in near] == ["0.99", "0.993"]
+    assert not [m for m in first.warnings if m.startswith("case ")]
+    assert again.warnings == first.warnings
+    at_speed = [c for c in first.cases if c.entry["inputs"]["speed"] > 0.9]
+    assert len(at_speed) == 12 and all(len(c.speed_warnings) == 1 for c in at_speed)
+    assert all(c.speed_warnings == () for c in first.cases if c not in at_speed)
+
+
+@pytest.mark.parametrize("chunks", [1, 5, 7])
+def test_the_warnings_of_a_run_do_not_depend_on_how_it_is_chunked(chunks, monkeypatch):
+    """The same sweep solved in chunks of any size, each chunk in a fresh process's cache
+    (the cache cleared between chunks, as a pool's workers each start with their own):
+    the same warnings as a serial run."""
+    from contact.scene import batch
+    from contact.scene import run as scene_run
+    serial = run_scene(scene(NEAR_RAYLEIGH_SWEEP)).warnings
+    original = batch.run_chunk
+
+    def fresh_worker(fn, cases):
+        scene_run._shared_constants.cache_clear()
+        return original(fn, cases)
+    monkeypatch.setattr(batch, "run_chunk", fresh_worker)
+    monkeypatch.setattr(batch, "SERIAL_CHUNK", chunks)
+    assert run_scene(scene(NEAR_RAYLEIGH_SWEEP)).warnings == serial
 
 
 def test_a_warning_in_a_batch_is_reported_with_its_case(monkeypatch):

@@ -351,7 +351,8 @@ class CaseEncoder:
     def __call__(self, res: CaseResult):
         table_row = self._rows.columns(res) if self._rows is not None else None
         text = CaseText(res.index, res.label, res.time_s, tuple(res.warnings), case_json(res),
-                        *row_lines(self._table, res), len(res.zones), table_row)
+                        *row_lines(self._table, res), len(res.zones), table_row,
+                        res.speed_warnings)
         if self.lean:
             return text
         res.encoded = text

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 import contact
+from sie import N_MAX
 
 from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
                               closed_form_kinds, import_callable)
@@ -508,9 +509,10 @@ class _Parser:
                              "either n (fixed) or tol (n chosen adaptively)")
         n = table.get("n")
         if n is not None and (isinstance(n, bool) or not isinstance(n, int)
-                              or not 2 <= n <= 100_000):
-            raise self.error("numerics.n", f"must be an integer in [2, 100000], got "
-                             f"{_describe(n)}", "an integer in [2, 100000]")
+                              or not 2 <= n <= N_MAX):
+            raise self.error("numerics.n", f"must be an integer in [2, {N_MAX}], got "
+                             f"{_describe(n)}", f"an integer in [2, {N_MAX}] (Jacobi "
+                             "coefficients per zone)")
         tol = table.get("tol", 1e-12)
         tol = self.number("numerics.tol", tol, "a number in (0, 1)")
         if not 0 < tol < 1:

@@ -61,6 +61,10 @@ class CaseResult:
     encoded : CaseText or None
         Its entry of result.json and its rows of sweep.csv as text, made where it was
         solved (:class:`contact.scene.output.CaseEncoder`); None: the writers make them.
+    speed_warnings : tuple of str
+        The warnings of its material at its speed (the surface constants: near the
+        Rayleigh speed), which every case at that speed shares: a run lists each once,
+        whichever case or worker met it first (``warnings`` holds the case's own).
     """
     index: int
     label: str
@@ -71,6 +75,7 @@ class CaseResult:
     subsurface: "SubsurfaceMap | None" = None
     diagnostics: dict = field(default_factory=dict)
     encoded: tuple | None = field(default=None, repr=False)
+    speed_warnings: tuple = ()
 
     def curve(self, name):
         """(x, values) of a sampled curve field."""
@@ -102,6 +107,8 @@ class CaseText(NamedTuple):
     #: Its row of the printed table, (columns, the raw number of each cell), or None when
     #: not made (:meth:`contact.scene.summary.TableRows.columns`).
     table_row: tuple | None = None
+    #: As :attr:`CaseResult.speed_warnings`.
+    speed_warnings: tuple = ()
 
 
 def case_text(res) -> CaseText | None:
@@ -211,10 +218,18 @@ def _json_entry(entry: dict) -> dict:
 
 
 @functools.lru_cache(maxsize=256)
-def _shared_constants(material, speed):
-    """surface_constants once per (material, speed) in each process (serial runs and each
-    worker of a pool share them across the sweep)."""
-    return contact.surface_constants(material, speed)
+def _shared_constants(material, speed) -> tuple:
+    """(surface_constants or its library input error, the messages of the warnings it gave)
+    once per (material, speed) in each process (serial runs and each worker of a pool share
+    them across the sweep): the warnings kept with the constants, so that every case at the
+    speed has them, whether the constants were computed for it or before it."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            consts = contact.surface_constants(material, speed)
+        except (contact.ContactInputError, sie.SIEInputError) as exc:
+            consts = exc
+    return consts, tuple(f"{w.category.__name__}: {w.message}" for w in caught)
 
 
 def run_cases(cases) -> list:
@@ -263,18 +278,11 @@ def _run_group(group) -> list:
         punch = build_once(first.punch)
     except (contact.ContactInputError, sie.SIEInputError) as exc:
         return [exc] * len(group)             # each case of the group fails with it
-    by_speed, early = {}, {}
+    by_speed = {}
     for case in group:
         if case.speed not in by_speed:
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
-                try:
-                    by_speed[case.speed] = _shared_constants(material, case.speed)
-                except (contact.ContactInputError, sie.SIEInputError) as exc:
-                    by_speed[case.speed] = exc
-            if caught:               # computed here first (near the Rayleigh speed)
-                early[case.index] = [f"{w.category.__name__}: {w.message}" for w in caught]
-    consts = [by_speed[case.speed] for case in group]
+            by_speed[case.speed] = _shared_constants(material, case.speed)
+    consts = [by_speed[case.speed][0] for case in group]
     ready = [i for i, k in enumerate(consts) if not isinstance(k, Exception)]
     results = [k if isinstance(k, Exception) else None for k in consts]
     if len(ready) > 1:
@@ -301,8 +309,9 @@ def _run_group(group) -> list:
                 res = exc
         if not isinstance(res, Exception):
             res.time_s = share + (time.perf_counter() - t1)
-            res.warnings = early.get(case.index, []) + \
-                [f"{w.category.__name__}: {w.message}" for w in caught] + res.warnings
+            res.warnings = [f"{w.category.__name__}: {w.message}" for w in caught] + \
+                res.warnings
+            res.speed_warnings = by_speed[case.speed][1]
         out.append(res)
     return out
 
@@ -503,8 +512,10 @@ class SceneRun:
         Seconds spent solving so far (the consumer's time between two chunks not counted,
         workers of an executor may solve meanwhile); the run's time once iterated.
     warnings : list of str
-        The run's warnings so far (those computing the per-speed fields, then each case's,
-        named by case); all of them once iterated.
+        The run's warnings so far: first those of the material at a speed (near the
+        Rayleigh speed: the surface constants, the per-speed fields), once each message,
+        then each case's own, named by case; all of them once iterated, the same whatever
+        the executor.
 
     Raises
     ------
@@ -552,11 +563,13 @@ class SceneRun:
                 failure = items.pop() if isinstance(items[-1][1], Exception) else None
                 results = [res for _, res in items]
                 delivered += len(results)
-                if per_speed:
-                    for res in results:
+                for res in results:
+                    if per_speed:
                         speed = res.entry["inputs"]["speed"]
                         res.entry = _with_speed_fields(res.entry, self._speed_fields(speed),
                                                        self.scene.fields)
+                    if res.speed_warnings:     # in scene order, whatever the chunks
+                        self._speed_warnings.update(dict.fromkeys(res.speed_warnings))
                 self._case_warnings += [f"case {res.index} ({res.label}): {w}"
                                         for res in results for w in res.warnings]
                 self.timing_s += time.perf_counter() - t0
