@@ -127,8 +127,16 @@ def exponent_alpha0(N11: float, N12: float, mu_f: float) -> float:
 
     Replaces the case tables (5.3), (5.16), (5.38) of the paper (wrong for xi < 0).
     """
+    return _alpha0_pair(N11, N12, mu_f)[0]
+
+
+def _alpha0_pair(N11: float, N12: float, mu_f: float) -> tuple[float, float, float]:
+    """(alpha0, 1 - alpha0, sin(pi alpha0)), each to full relative precision: 1 - alpha0
+    as the arccot of +xi (not by subtracting a rounded alpha0, which loses its digits as
+    alpha0 -> 1, i.e. as friction grows), and the sine from the smaller of the two."""
     xi = mu_f * N12 / N11
-    return math.atan2(1.0, -xi) / math.pi
+    a0, a0c = math.atan2(1.0, -xi) / math.pi, math.atan2(1.0, xi) / math.pi
+    return a0, a0c, math.sin(math.pi * min(a0, a0c))
 
 
 def _check_constants(N11, N12, N21, N22, mu_f):
@@ -150,21 +158,24 @@ def _positive(name, value, error):
     return v
 
 
-def _mu0(alpha: float, beta: float) -> float:
-    """int_{-1}^{1} (1-s)^alpha (1+s)^beta ds = 2^{alpha+beta+1} G(alpha+1)G(beta+1)/G(alpha+beta+2)."""
-    return (2.0 ** (alpha + beta + 1.0) * math.gamma(alpha + 1.0) * math.gamma(beta + 1.0)
-            / math.gamma(alpha + beta + 2.0))
+def _mu0(ap1: float, bp1: float) -> float:
+    """int_{-1}^{1} (1-s)^alpha (1+s)^beta ds = 2^{alpha+beta+1} G(alpha+1)G(beta+1)/G(alpha+beta+2),
+    from the shifted exponents ap1 = alpha + 1, bp1 = beta + 1 (exact: G(alpha + 1) from a
+    rounded alpha near -1 would lose ~1e-16 / (alpha + 1) of itself)."""
+    return (2.0 ** (ap1 + bp1 - 1.0) * math.gamma(ap1) * math.gamma(bp1)
+            / math.gamma(ap1 + bp1))
 
 
-def _euler_J(alpha: float, beta: float, x: np.ndarray) -> np.ndarray:
-    """J(x) = int_{-1}^{1} (1-t)^alpha (1+t)^beta / (t - x) dt for |x| >= _FAR (vectorised).
+def _euler_J(ap1: float, bp1: float, x: np.ndarray) -> np.ndarray:
+    """J(x) = int_{-1}^{1} (1-t)^alpha (1+t)^beta / (t - x) dt for |x| >= _FAR (vectorised),
+    alpha = ap1 - 1, beta = bp1 - 1.
 
     x > 1:  J = -mu0/(x-1) * 2F1(1, alpha+1; alpha+beta+2; z), z = 2/(1-x), |z| <= 2/3
             (Euler's integral with t = 1 - 2u); x < -1: J_{alpha,beta}(x) = -J_{beta,alpha}(-x).
     """
     x = np.asarray(x, dtype=float)
     out = np.empty_like(x)
-    for sign, a, b in ((1.0, alpha, beta), (-1.0, beta, alpha)):
+    for sign, a1, b1 in ((1.0, ap1, bp1), (-1.0, bp1, ap1)):
         m = (sign * x) > 0
         if not np.any(m):
             continue
@@ -172,13 +183,13 @@ def _euler_J(alpha: float, beta: float, x: np.ndarray) -> np.ndarray:
         z = 2.0 / (1.0 - y)
         term = np.ones_like(z)
         total = np.ones_like(z)
-        c = a + b + 2.0
+        c = a1 + b1
         for n in range(400):
-            term = term * ((a + 1.0 + n) / (c + n)) * z
+            term = term * ((a1 + n) / (c + n)) * z
             total = total + term
             if np.all(np.abs(term) <= 1e-17 * np.abs(total)):
                 break
-        out[m] = sign * (-_mu0(a, b) / (y - 1.0) * total)
+        out[m] = sign * (-_mu0(a1, b1) / (y - 1.0) * total)
     return out
 
 
@@ -196,6 +207,9 @@ class ClosedFormSolution:
     ends : (x_left, x_right), the contact zone
     alpha, beta : exponents at the right (X = x_right) and left (X = x_left) ends
     kappa : -(alpha + beta), the index (1, 0 or -1)
+    alpha_p1, beta_p1 : alpha + 1, beta + 1, exact (not from the rounded exponents, which
+        lose their digits in them at an exponent near -1: at friction ~1e4 and beyond)
+    sin_alpha : sin(pi alpha), exact (likewise)
     phi : (d0, d1), psi(s) = w(s)*(d0 + d1*s) in the normalised variable s in (-1, 1)
     load : the prescribed total load P
     load_check : int p dX = L*(d0*mu0 + d1*mu1) evaluated in closed form (should equal ``load``)
@@ -212,6 +226,9 @@ class ClosedFormSolution:
     alpha: float
     beta: float
     kappa: int
+    alpha_p1: float
+    beta_p1: float
+    sin_alpha: float
     phi: tuple
     load: float
     load_check: float
@@ -253,12 +270,18 @@ class ClosedFormSolution:
         """(1/pi) int p(t) / (t - z) dt at complex z off the contact, through the Jacobi
         series of d0 + d1 s (P_1^(alpha,beta)(s) = (alpha - beta)/2 + (alpha + beta + 2) s/2)
         and :func:`sie.cauchy.jacobi_cauchy` (the transform is scale-free: t = m + L u)."""
-        from sie.cauchy import jacobi_cauchy
-        c1 = 2.0 * self.phi[1] / (self.alpha + self.beta + 2.0)
+        from sie.cauchy import Weight, cauchy_series, evaluation_points
+        c1 = 2.0 * self.phi[1] / (self.alpha_p1 + self.beta_p1)
         c0 = self.phi[0] - 0.5 * c1 * (self.alpha - self.beta)
         mid = 0.5 * (self.ends[0] + self.ends[1])
-        return jacobi_cauchy([c0, c1], self.alpha, self.beta,
-                             (np.asarray(z) - mid) / self.half_length)
+        # the weight from the exact shifts: 1 - alpha = 1 + beta + kappa (beta itself at
+        # kappa = -1, where 1 + beta - 1 would cancel)
+        am1 = self.beta if self.kappa == -1 else self.beta_p1 + self.kappa
+        wt = Weight(self.alpha, self.beta, self.alpha_p1, self.beta_p1, am1, self.sin_alpha)
+        u, cplx = evaluation_points((np.asarray(z) - mid) / self.half_length,
+                                    ((-1.0, 1.0),), "z")
+        out = cauchy_series(np.array([c0, c1]), wt, u.ravel()).reshape(u.shape)
+        return out if cplx else out.real
 
     # -- Hilbert transform of p -------------------------------------------------------------
     def _R(self, s):
@@ -269,7 +292,12 @@ class ClosedFormSolution:
         return s + (self.beta - self.alpha)
 
     def hilbert_pressure(self, X):
-        """Hc[p](X) = (1/pi) PV int p(t)/(t - X) dt at any real X (ValueError at a singular end)."""
+        """Hc[p](X) = (1/pi) PV int p(t)/(t - X) dt at any real X (ValueError at a singular end).
+
+        Near the contact the formula subtracts R from w cos(pi alpha) (resp. F), which agree
+        to first order in an exponent near 0: with min(abs(alpha), abs(beta)) ~ e it keeps
+        ~1e-16 / e of relative precision (1e-12 at friction 1e4 on the Zhou 2014 material,
+        1e-4 at 1e12); the numeric path's transform keeps every digit there."""
         X = np.asarray(X, dtype=float)
         um, up = self._one_minus_one_plus(X)
         a, b, k = self.alpha, self.beta, self.kappa
@@ -280,9 +308,9 @@ class ClosedFormSolution:
         # s from the nearer end
         s = np.where(um < up, 1.0 - um, up - 1.0)
         d0, d1 = self.phi
-        sa = math.sin(math.pi * a)
+        sa = self.sin_alpha
         ca = math.cos(math.pi * a)
-        mu0 = _mu0(a, b)
+        mu0 = _mu0(self.alpha_p1, self.beta_p1)
         const = d1 * mu0 / math.pi
         out = np.empty(X.shape, dtype=float)
 
@@ -306,7 +334,8 @@ class ClosedFormSolution:
         far = (right | left) & (np.abs(s) > _FAR)
         if np.any(far):
             sf = s[far]
-            J = (d0 + d1) * _euler_J(a, b, sf) - d1 * _euler_J(a + 1.0, b, sf)
+            ap1, bp1 = self.alpha_p1, self.beta_p1
+            J = (d0 + d1) * _euler_J(ap1, bp1, sf) - d1 * _euler_J(ap1 + 1.0, bp1, sf)
             out[far] = J / math.pi
         return out[()] if out.ndim == 0 else out
 
@@ -320,15 +349,18 @@ class ClosedFormSolution:
         return out[()] if np.ndim(out) == 0 else out
 
 
-def _build(punch, N11, N12, N21, N22, mu_f, ends, alpha, beta, d0, d1, load, sif):
+def _build(punch, N11, N12, N21, N22, mu_f, ends, exponents, d0, d1, load, sif):
+    """The solution; ``exponents`` = (alpha, beta, alpha + 1, beta + 1, sin(pi alpha))."""
+    alpha, beta, ap1, bp1, sin_alpha = exponents
     kappa = int(round(-(alpha + beta)))
     L = 0.5 * (ends[1] - ends[0])
-    mu0 = _mu0(alpha, beta)
-    mu1 = (beta - alpha) * mu0 / (alpha + beta + 2.0)  # int w s ds (integrate d/ds[(1-s)^{a+1}(1+s)^{b+1}])
+    mu0 = _mu0(ap1, bp1)
+    mu1 = (beta - alpha) * mu0 / (ap1 + bp1)  # int w s ds (integrate d/ds[(1-s)^{a+1}(1+s)^{b+1}])
     load_check = L * (d0 * mu0 + d1 * mu1)
     return ClosedFormSolution(punch=punch, N11=N11, N12=N12, N21=N21, N22=N22, mu_f=mu_f,
                               ends=(float(ends[0]), float(ends[1])), alpha=alpha, beta=beta,
-                              kappa=kappa, phi=(float(d0), float(d1)), load=load,
+                              kappa=kappa, alpha_p1=ap1, beta_p1=bp1, sin_alpha=sin_alpha,
+                              phi=(float(d0), float(d1)), load=load,
                               load_check=float(load_check), sif=dict(sif))
 
 
@@ -350,11 +382,12 @@ def flat_closed_form(N11, N12, N21, N22, mu_f, half_width, load) -> ClosedFormSo
     N11, N12, N21, N22, mu_f = _check_constants(N11, N12, N21, N22, mu_f)
     a = _positive("half_width", half_width, PunchGeometryError)
     P = _positive("load", load, LoadError)
-    a0 = exponent_alpha0(N11, N12, mu_f)
-    alpha, beta = a0 - 1.0, -a0
-    c0 = P / (a * _mu0(alpha, beta))          # = -P sin(pi alpha)/(pi a)
+    a0, a0c, sin0 = _alpha0_pair(N11, N12, mu_f)
+    alpha, beta = -a0c, -a0                   # alpha0 - 1, -alpha0
+    c0 = P * sin0 / (math.pi * a)             # = P / (a mu0) = -P sin(pi alpha)/(pi a)
     sif = {"right": c0 * a ** (-alpha), "left": c0 * a ** (-beta)}
-    return _build("flat", N11, N12, N21, N22, mu_f, (-a, a), alpha, beta, c0, 0.0, P, sif)
+    return _build("flat", N11, N12, N21, N22, mu_f, (-a, a), (alpha, beta, a0, a0c, -sin0),
+                  c0, 0.0, P, sif)
 
 
 def triangular_closed_form(N11, N12, N21, N22, mu_f, slope, load) -> ClosedFormSolution:
@@ -370,12 +403,13 @@ def triangular_closed_form(N11, N12, N21, N22, mu_f, slope, load) -> ClosedFormS
     N11, N12, N21, N22, mu_f = _check_constants(N11, N12, N21, N22, mu_f)
     m0 = _positive("slope", slope, PunchGeometryError)
     P = _positive("load", load, LoadError)
-    alpha = exponent_alpha0(N11, N12, mu_f)
+    alpha, a0c, sin0 = _alpha0_pair(N11, N12, mu_f)
     beta = -alpha
     b = -N11 * P / (m0 * math.pi * alpha)
-    c0 = -m0 * math.sin(math.pi * alpha) / N11
+    c0 = -m0 * sin0 / N11
     sif = {"left": c0 * b ** alpha}
-    return _build("triangular", N11, N12, N21, N22, mu_f, (0.0, b), alpha, beta, c0, 0.0, P, sif)
+    return _build("triangular", N11, N12, N21, N22, mu_f, (0.0, b),
+                  (alpha, beta, 1.0 + alpha, a0c, sin0), c0, 0.0, P, sif)
 
 
 def parabolic_closed_form(N11, N12, N21, N22, mu_f, radius, load) -> ClosedFormSolution:
@@ -393,13 +427,13 @@ def parabolic_closed_form(N11, N12, N21, N22, mu_f, radius, load) -> ClosedFormS
     N11, N12, N21, N22, mu_f = _check_constants(N11, N12, N21, N22, mu_f)
     R = _positive("radius", radius, PunchGeometryError)
     P = _positive("load", load, LoadError)
-    alpha = exponent_alpha0(N11, N12, mu_f)
+    alpha, a0c, sin0 = _alpha0_pair(N11, N12, mu_f)
     beta = -alpha
     b = math.sqrt(-2.0 * N11 * P * R / (math.pi * alpha * (1.0 + alpha)))
-    c1 = -b * math.sin(math.pi * alpha) / (2.0 * N11 * R)
-    sif = {"left": b ** (alpha + 1.0) * alpha * math.sin(math.pi * alpha) / (-N11 * R)}
-    return _build("parabolic", N11, N12, N21, N22, mu_f, (0.0, b), alpha, beta,
-                  c1 * (1.0 + 2.0 * alpha), c1, P, sif)
+    c1 = -b * sin0 / (2.0 * N11 * R)
+    sif = {"left": b ** (alpha + 1.0) * alpha * sin0 / (-N11 * R)}
+    return _build("parabolic", N11, N12, N21, N22, mu_f, (0.0, b),
+                  (alpha, beta, 1.0 + alpha, a0c, sin0), c1 * (1.0 + 2.0 * alpha), c1, P, sif)
 
 
 def cylindrical_closed_form(N11, N12, N21, N22, mu_f, radius, load) -> ClosedFormSolution:
@@ -415,9 +449,9 @@ def cylindrical_closed_form(N11, N12, N21, N22, mu_f, radius, load) -> ClosedFor
     N11, N12, N21, N22, mu_f = _check_constants(N11, N12, N21, N22, mu_f)
     R = _positive("radius", radius, PunchGeometryError)
     P = _positive("load", load, LoadError)
-    alpha = exponent_alpha0(N11, N12, mu_f)
-    beta = 1.0 - alpha
+    alpha, beta, sin0 = _alpha0_pair(N11, N12, mu_f)     # beta = 1 - alpha0, exact
     a0 = math.sqrt(-2.0 * N11 * P * R / (math.pi * alpha * beta))
     a, b = alpha * a0, beta * a0
-    c0 = -a0 * math.sin(math.pi * alpha) / (2.0 * N11 * R)
-    return _build("cylindrical", N11, N12, N21, N22, mu_f, (-a, b), alpha, beta, c0, 0.0, P, {})
+    c0 = -a0 * sin0 / (2.0 * N11 * R)
+    return _build("cylindrical", N11, N12, N21, N22, mu_f, (-a, b),
+                  (alpha, beta, 1.0 + alpha, 1.0 + beta, sin0), c0, 0.0, P, {})

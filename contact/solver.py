@@ -424,7 +424,27 @@ def _numeric_cases(material, punch, cases, n, tol, errors="raise", residual=Fals
             if errors == "raise":
                 raise
             out[i] = exc
+    if n is not None:               # a fixed n is checked here; an adaptive one converged
+        for r in out:
+            if not isinstance(r, Exception):
+                _warn_unresolved(r, n)
     return out
+
+
+#: A residual (:attr:`ContactResult.residual`) above this, at a fixed n, is warned.
+RESIDUAL_WARN = 1e-6
+
+
+def _warn_unresolved(result, n):
+    """A sie.ResidualWarning where the fixed ``n`` leaves the equation unsolved between the
+    nodes (residual > RESIDUAL_WARN of its scale): the face varies faster than n resolves."""
+    if result.residual > RESIDUAL_WARN:
+        warnings.warn(
+            f"contact.solve: the fixed n = {n} leaves a residual of {result.residual:.2g} of "
+            f"the equation's scale between the nodes (> {RESIDUAL_WARN:g}) at load "
+            f"{result.load!r}, speed {result.speed!r}, friction {result.friction!r}: n does "
+            f"not resolve the face (pass a larger n, or leave n out for the adaptive n)",
+            sie.ResidualWarning, stacklevel=4)
 
 
 def _lockstep_results(material, punch, cases, steps, residual):

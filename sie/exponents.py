@@ -88,7 +88,7 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
     Raises
     ------
     InvalidCoefficientError
-        a or b not a finite real number, b = 0, or |b/a| < :data:`MIN_B_OVER_A` (an end
+        a or b not a finite real number, b = 0, or abs(b/a) below :data:`MIN_B_OVER_A` (an end
         exponent within rounding of -1 or 1).
     InvalidEndConditionError
         left or right not "bounded" or "singular".
@@ -116,15 +116,15 @@ def sie_exponents(a: float, b: float, left: str, right: str) -> Exponents:
     return exponents_of(a, b, check_end("left", left), check_end("right", right))
 
 
-#: About the smallest |b/a| that double precision resolves: below it alpha0 (cot(pi alpha0)
-#: = -a/b, alpha0 ~ |b/a| / pi) or 1 - alpha0, as :func:`exponents_of` computes it from
-#: atan2, rounds to 1, and an end exponent to -1 or 1 (the exact bound, ~3.4e-16, is where
-#: that rounding happens; :func:`check_coefficients` tests the rounding itself).
+#: About the smallest abs(b/a) that double precision resolves: below it alpha0 (cot(pi
+#: alpha0) = -a/b, alpha0 ~ abs(b/a) / pi) or 1 - alpha0, as :func:`exponents_of` computes
+#: it from atan2, rounds to 1, and an end exponent to -1 or 1 (the exact bound, ~3.4e-16,
+#: is where that rounding happens; :func:`check_coefficients` tests the rounding itself).
 MIN_B_OVER_A = math.pi * 2.0 ** -53
 
 
 def check_coefficients(a, b) -> tuple[float, float]:
-    """(a, b) as floats: finite reals with b != 0 and |b/a| resolved in double precision
+    """(a, b) as floats: finite reals with b != 0 and abs(b/a) resolved in double precision
     (:data:`MIN_B_OVER_A`), else InvalidCoefficientError."""
     a = check_finite_real("a", a, InvalidCoefficientError)
     b = check_finite_real("b", b, InvalidCoefficientError)

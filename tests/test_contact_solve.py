@@ -242,8 +242,20 @@ def test_custom_asymmetric_profile_converges():
 
 
 def test_custom_rounded_flat_converges_with_breaks():
+    """Spectral convergence with breaks at the kinks, algebraic without; and a fixed n that
+    leaves the kinks unresolved says so (a ResidualWarning), where with breaks it is silent."""
     with_b = {(a, b): n_change("rounded", a, b) for a, b in ((16, 32), (32, 64))}
-    without = {(a, b): n_change("rounded_nobreaks", a, b) for a, b in ((16, 32), (32, 64))}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sie.ResidualWarning)      # asserted below
+        without = {(a, b): n_change("rounded_nobreaks", a, b) for a, b in ((16, 32), (32, 64))}
+    for name in ("rounded_nobreaks", "rounded"):
+        factory, load, c, mu = CUSTOM[name]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            contact.solve(MAT, factory(), load=load, speed=c, friction=mu, direction=-1, n=64)
+        said = [str(w.message) for w in caught if issubclass(w.category, sie.ResidualWarning)]
+        assert len(said) == (1 if name == "rounded_nobreaks" else 0)
+        assert all("the fixed n = 64 leaves a residual" in m for m in said)
     report(f"rounded flat with breaks: n-change 16->32 {with_b[16, 32]:.2e}, 32->64 "
            f"{with_b[32, 64]:.2e}; without breaks: 16->32 {without[16, 32]:.2e}, 32->64 "
            f"{without[32, 64]:.2e} (ratio {without[32, 64] / max(with_b[32, 64], 1e-300):.1e})")
@@ -399,14 +411,43 @@ def test_a_flat_punch_at_a_huge_friction_keeps_every_digit(friction, direction):
     from mpmath import mp
     mp.dps = 40
     r = contact.solve(MAT, FLAT, load=0.01, speed=0.3, friction=friction, direction=direction)
+    c = contact.solve(MAT, FLAT, load=0.01, speed=0.3, friction=friction, direction=direction,
+                      method="closed_form")
     k = r.constants
     alpha0 = mp.atan2(1, mp.mpf(direction) * friction * mp.mpf(k.N12) / mp.mpf(k.N11)) / mp.pi
     X = np.array([-0.9, -0.5, 0.0, 0.5, 0.9])
-    for x, got in zip(X, r.pressure(X)):
+    for x, got, closed in zip(X, r.pressure(X), c.pressure(X)):
         s = mp.mpf(x)
         ref = 0.01 * mp.sin(mp.pi * alpha0) / mp.pi * (1 - s) ** (alpha0 - 1) * (1 + s) ** -alpha0
         assert abs(got / ref - 1) < 5e-14
+        assert abs(closed / ref - 1) < 5e-14
     assert r.residual < 1e-14
+
+
+@pytest.mark.parametrize("kind", ["triangular", "parabolic", "cylindrical"])
+@pytest.mark.parametrize("friction", [1e4, 1e12, 1e15])
+@pytest.mark.parametrize("direction", [-1, 1])
+def test_numeric_and_closed_form_agree_at_a_huge_friction(kind, friction, direction):
+    """The other three punches with an exponent within 1e-15 of 0 or 1: numeric and closed
+    form (its alpha + 1, 1 - alpha and sin(pi alpha) from the arccot of +-xi, not from a
+    rounded exponent) agree to 1e-13 in the ends, the pressure and the stresses under the
+    surface, and the residual stays at rounding."""
+    punch = PUNCHES[kind]()
+    r = contact.solve(MAT, punch, load=0.01, speed=0.3, friction=friction, direction=direction)
+    c = contact.solve(MAT, punch, load=0.01, speed=0.3, friction=friction, direction=direction,
+                      method="closed_form")
+    width = r.ends[1] - r.ends[0]
+    assert np.allclose(r.ends, c.ends, rtol=0, atol=1e-13 * width)
+    X = r.ends[0] + width * np.array([0.1, 0.3, 0.5, 0.7, 0.9])
+    assert np.allclose(r.pressure(X), c.pressure(X), rtol=1e-13, atol=0)
+    assert r.residual < 1e-13
+    # the transform under the surface, from the exact shifted exponents on both paths
+    X = r.ends[0] + width * np.array([-0.5, 0.2, 0.6, 1.5])
+    Y = np.full(4, -0.2 * width)
+    a, b = r.stress(X, Y), c.stress(X, Y)
+    for name in ("sigma_xx", "sigma_yy", "sigma_xy"):
+        ref = getattr(b, name)
+        assert np.allclose(getattr(a, name), ref, rtol=0, atol=1e-13 * np.max(np.abs(ref)))
 
 
 def test_a_friction_that_rounds_an_exponent_to_minus_one_is_refused():
