@@ -138,9 +138,9 @@ class Face:
         zero = np.abs(dH) <= 1e-14 * top
         cands = []
         if math.isfinite(self.extent[0]) and (dH[0] > 0 or zero[0]) and not zero[:2].all():
-            cands.append((X[0], "left-edge"))
+            cands.append((float(X[0]), "left-edge"))
         if math.isfinite(self.extent[1]) and (dH[-1] < 0 or zero[-1]) and not zero[-2:].all():
-            cands.append((X[-1], "right-edge"))
+            cands.append((float(X[-1]), "right-edge"))
         # flat stretches: runs of two or more exact zeros of H', falling before and rising after
         z = np.concatenate([[0], zero.astype(np.int8), [0]])
         starts = np.flatnonzero(np.diff(z) == 1)
@@ -149,7 +149,17 @@ class Face:
             if j > k and (k == 0 or dH[k - 1] < 0) and (j == m - 1 or dH[j + 1] > 0):
                 c = X[k] if k == 0 else _end_between(self.breaks, X[k - 1], X[k], X[k - 1])
                 d = X[j] if j == m - 1 else _end_between(self.breaks, X[j], X[j + 1], X[j + 1])
-                cands.append(((c, d), "flat"))
+                left_open = k == 0 and not math.isfinite(self.extent[0])
+                right_open = j == m - 1 and not math.isfinite(self.extent[1])
+                if left_open or right_open:     # no lowest point: flat toward no edge
+                    where = ("everywhere, with no edge" if left_open and right_open else
+                             f"toward -X from X = {float(d):.6g}, a side without an edge"
+                             if left_open else
+                             f"toward +X from X = {float(c):.6g}, a side without an edge")
+                    raise PunchGeometryError(
+                        f"the face is flat {where}: give the face's extent (face=) so that "
+                        "contact has an edge there")
+                cands.append(((float(c), float(d)), "flat"))
         # interior minima: H' from - to + (a single zero sample counts as the crossing)
         runs = np.zeros(m, dtype=bool)
         for k, j in zip(starts, stops):

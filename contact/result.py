@@ -241,7 +241,12 @@ class ContactResult:
         return 0.5 * (e[1] + e[0])
 
     def _X(self, X):
-        X = np.asarray(X, dtype=float)
+        try:
+            if np.iscomplexobj(X):              # numpy would drop the imaginary part
+                raise TypeError
+            X = np.asarray(X, dtype=float)
+        except (TypeError, ValueError):         # complex, strings, ragged
+            raise ContactInputError(f"X must be finite real numbers, got {X!r}") from None
         if not np.all(np.isfinite(X)):
             raise ContactInputError("X must be finite real numbers")
         return X

@@ -224,7 +224,7 @@ def face_from_samples(X, h, *, kind="quintic", breaks="auto", outside="raise") -
         i = int(bad[0])
         what = "repeated" if dX[i] == 0.0 else "decreasing (unsorted)"
         raise SampleError(f"X must be strictly increasing (sorted, no repeated X), got "
-                          f"X[{i}] = {Xa[i]!r} and X[{i + 1}] = {Xa[i + 1]!r}: {what}")
+                          f"X[{i}] = {float(Xa[i])!r} and X[{i + 1}] = {float(Xa[i + 1])!r}: {what}")
     deg = min(_DEGREE[kind], N - 1)
     # imported here: scipy.interpolate adds ~20 ms to the start of every `contact run`,
     # and only a face given by samples needs it

@@ -543,12 +543,12 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
     if P.size == 0:
         raise LoadError("loads must hold at least one load, got none")
     if not np.all(np.isfinite(P)) or not np.all(P > 0):
-        bad = P[~(np.isfinite(P) & (P > 0))][0]
+        bad = float(P[~(np.isfinite(P) & (P > 0))][0])
         raise LoadError(f"every load must be positive and finite, got {bad!r}")
     if np.any(np.diff(P) <= 0):
         i = int(np.flatnonzero(np.diff(P) <= 0)[0])
-        raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {P[i]!r} and "
-                        f"loads[{i + 1}] = {P[i + 1]!r}")
+        raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {float(P[i])!r} and "
+                        f"loads[{i + 1}] = {float(P[i + 1])!r}")
     const = _surface_constants(material, speed, constants)
     mu_f = _signed_friction(const, friction, direction)
     return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol,

@@ -128,7 +128,7 @@ def split_breaks(breaks, intervals):
         else:
             where = " or ".join(f"({iv.c!r}, {iv.d!r})" for iv in intervals)
             cls = InvalidBreakpointError if len(intervals) == 1 else PerIntervalArgumentError
-            raise cls(f"breaks must lie strictly inside {where}; got {x!r}")
+            raise cls(f"breaks must lie strictly inside {where}; got {float(x)!r}")
     res = []
     for u in out:
         u = np.sort(np.asarray(u, dtype=float))

@@ -366,3 +366,29 @@ def test_protrusion_between_the_merges_is_two_zones():
     assert "split" not in [e.kind for e in curve.events]
     for r in curve:
         check_contact(r)
+
+
+@pytest.mark.parametrize("slope, face, said", [
+    (lambda X: 0.0 * X, None, "flat everywhere, with no edge"),
+    (lambda X: 0.0 * X, (-1.0, math.inf), "flat toward \\+X from X = -1, a side without"),
+    (lambda X: 0.0 * X, (-math.inf, 2.0), "flat toward -X from X = 2, a side without"),
+    (lambda X: np.where(X > 0.0, X / 100.0, 0.0 * X), None, "flat toward -X from X = 0"),
+])
+def test_a_face_flat_toward_a_side_without_an_edge_asks_for_its_extent(slope, face, said):
+    """A face whose height does not rise toward an unbounded side has no lowest point to
+    touch first: the solve asks for the face's extent, naming where the face is flat (it
+    reported a load it could not carry on the window searched, in numpy reprs)."""
+    punch = contact.ProfilePunch(slope, face=face) if face else contact.ProfilePunch(slope)
+    with pytest.raises(contact.PunchGeometryError, match=said) as exc:
+        contact.solve(MAT, punch, load=0.01, speed=0.3)
+    assert "face=" in str(exc.value) and "np.float64" not in str(exc.value)
+
+
+def test_a_flat_face_with_its_extent_is_the_flat_punch():
+    """The same face given its extent: the flat punch's contact, both ends at its corners."""
+    r = contact.solve(MAT, contact.ProfilePunch(lambda X: 0.0 * X, face=(-1.0, 1.0)),
+                      load=0.01, speed=0.3, friction=0.2)
+    ref = contact.solve(MAT, contact.FlatPunch(1.0), load=0.01, speed=0.3, friction=0.2)
+    assert r.ends == (-1.0, 1.0) and r.zones[0].kinds == ("corner", "corner")
+    X = np.linspace(-0.9, 0.9, 7)
+    assert np.allclose(r.pressure(X), ref.pressure(X), rtol=1e-12, atol=0)

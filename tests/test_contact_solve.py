@@ -825,3 +825,31 @@ def test_closed_form_load_check_is_the_relative_load_error(punch):
                       method="closed_form")
     assert r.load_check <= 1e-13
     assert r.load_check == abs(r.solution.load_check - 0.01) / 0.01
+
+
+@pytest.mark.parametrize("X", [1j, np.array([0.1, 0.2 + 1e-3j]), [[0.1], [0.2, 0.3]], "x"])
+def test_a_point_that_is_not_real_is_refused_by_the_fields(X):
+    """Complex (numpy would keep its real part and warn), ragged, text that is no number: a
+    ContactInputError naming what was given, from every surface field."""
+    r = contact.solve(MAT, contact.CylindricalPunch(100.0), load=0.01, speed=0.3)
+    for field in (r.pressure, r.shear, r.hilbert_pressure, r.sigma_xx):
+        with pytest.raises(contact.ContactInputError, match="finite real numbers"):
+            field(X)
+
+
+def test_messages_give_numbers_as_numbers_not_numpy_reprs():
+    """Values drawn from arrays read as plain numbers in the errors (not np.float64(...))."""
+    attempts = [
+        lambda: contact.load_curve(MAT, contact.CylindricalPunch(100.0), loads=[0.02, 0.01],
+                                   speed=0.3),
+        lambda: contact.load_curve(MAT, contact.CylindricalPunch(100.0), loads=[0.02, np.nan],
+                                   speed=0.3),
+        lambda: contact.ProfilePunch.from_samples(np.array([0.0, 1.0, 0.5, 2.0]),
+                                                  np.array([0.0, 1.0, 2.0, 3.0])),
+        lambda: sie.solve(np.ones_like, a=0.0, b=1.0, n=8, left="bounded", right="singular",
+                          breaks=np.array([2.0])),
+    ]
+    for attempt in attempts:
+        with pytest.raises((contact.ContactInputError, sie.SIEInputError)) as exc:
+            attempt()
+        assert "np." not in str(exc.value), str(exc.value)

@@ -337,12 +337,23 @@ def test_out_refused_by_the_system_fails_before_solving(tmp_path, no_solving, mo
         raise PermissionError(13, "Permission denied")
     scene = write_scene(tmp_path, CYLINDER_SWEEP)
     monkeypatch.setattr(tempfile, "TemporaryFile", refuse)
-    monkeypatch.setattr(os, "access", lambda path, mode: False)
+    monkeypatch.setattr(tempfile, "mkdtemp", refuse)
     for out, why in ((tmp_path, "is not writable (Permission denied)"),
-                     (tmp_path / "new" / "dir", f"cannot be created: {tmp_path} is not writable")):
+                     (tmp_path / "new" / "dir",
+                      f"cannot be created in {tmp_path} (Permission denied)")):
         rc, _, err = run_cli("run", scene, "--out", out)
         assert rc == 2 and no_solving == [] and why in err, err
     assert not (tmp_path / "new").exists()
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="no /proc")
+def test_out_under_a_pseudo_filesystem_fails_before_solving(tmp_path, no_solving):
+    """/proc takes no new directory, even from root, whom os.access lets write anywhere: the
+    check makes (and removes) one, so the refusal comes before solving, not after."""
+    scene = write_scene(tmp_path, CYLINDER_SWEEP)
+    rc, _, err = run_cli("run", scene, "--out", "/proc/contact-out-check/new")
+    assert rc == 2 and no_solving == [] and "cannot be created in /proc" in err, err
+    assert list(tmp_path.glob(".contact-write-check*")) == []
 
 
 @pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() == 0,
@@ -353,9 +364,9 @@ def test_out_without_write_permission_fails_before_solving(tmp_path, no_solving)
     locked.mkdir()
     locked.chmod(0o500)
     try:
-        for out in (locked, locked / "new"):
+        for out, why in ((locked, "not writable"), (locked / "new", "cannot be created in")):
             rc, _, err = run_cli("run", scene, "--out", out)
-            assert rc == 2 and no_solving == [] and "not writable" in err
+            assert rc == 2 and no_solving == [] and why in err
     finally:
         locked.chmod(0o700)
 
