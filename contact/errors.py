@@ -171,15 +171,21 @@ class ContactLossError(ContactInputError):
 
     Examples
     --------
-    A flat face with one edge and no bound on the other side carries no load at first touch:
+    A wedge, whose slope jumps at its apex, without ``breaks`` there: the ends cannot be
+    found from the apex (the polynomial basis cannot follow the jump); with the break, they
+    are.
 
     >>> import numpy as np, contact
-    >>> face = contact.ProfilePunch(np.zeros_like, face=(-1.0, np.inf))
+    >>> wedge = lambda breaks: contact.ProfilePunch(lambda X: 0.01 * np.sign(X),
+    ...                                             face=(-1.0, 1.0), breaks=breaks)
     >>> try:
-    ...     contact.solve(contact.zhou2014(), face, load=0.01, speed=0.0)
+    ...     contact.solve(contact.zhou2014(), wedge(()), load=0.01, speed=0.0)
     ... except contact.ContactLossError as e:
-    ...     print(type(e).__name__, "-", str(e)[:50])
-    ContactLossError - the face carries no compressive load at its lowest
+    ...     print(type(e).__name__, "-", str(e)[:53])
+    ContactLossError - Newton's method for the contact ends made no progress
+    >>> r = contact.solve(contact.zhou2014(), wedge((0.0,)), load=0.01, speed=0.0)
+    >>> round(r.ends[1], 6) == -round(r.ends[0], 6) > 0
+    True
     """
 
 

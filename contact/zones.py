@@ -258,9 +258,13 @@ class ZoneEquations:
                     J = None
                     continue
                 if step is None:
+                    hint = "" if self.breaks else (
+                        "; if the slope jumps or kinks (a wedge's apex, a rounded corner), "
+                        "pass its X positions as breaks=")
                     raise ContactLossError(
                         "Newton's method for the contact ends made no progress at ends "
-                        f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})")
+                        f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})"
+                        f"{hint}")
             xn, zn, Fn, soln, tn = step
             s = xn - x
             if np.max(np.abs(F)) > _NEAR_FLOOR:

@@ -23,6 +23,10 @@ Robustness
   kernel is first called: every dispatcher's cache lookup is wrapped so that a
   failing load counts as a cache miss (numba then compiles and overwrites the
   entry).
+* numba checks a kernel's entry against its own file only, not against the
+  files of the kernels it calls and compiles into itself: the package's entries
+  are dropped wherever any of its modules changed since they were written
+  (:func:`_drop_stale_entries`).
 """
 from __future__ import annotations
 
@@ -78,6 +82,50 @@ if CACHE_ENABLED and not _sanitize_cache():
 
 
 _WARNED: list = []
+_STAMPED: list = []
+#: Beside the package's cache entries: the stat of every module of the package when they
+#: were written (:func:`_drop_stale_entries`).
+STAMP_NAME = "sie-sources.stamp"
+
+
+def _sources_stamp() -> str:
+    """(name, size, mtime) of every module of the package, as one line."""
+    here = Path(__file__).resolve().parent
+    return repr(sorted((p.name, st.st_size, st.st_mtime_ns)
+                       for p in here.glob("*.py") for st in (p.stat(),)))
+
+
+def _drop_stale_entries(dispatcher):
+    """Once per process, at the first kernel decorated (before any is called): drop the
+    package's cache entries where its modules changed since they were written.
+
+    numba keys a kernel's entry by the stat of the kernel's own file, not of the files of
+    the kernels it calls and compiles into itself: a kernel whose callee in another module
+    changed would load its old machine code, silently (as ``sie.batch._cauchy_limits`` kept
+    an old ``sie.cauchy_kernels._f0``).  A stamp of every module's stat kept beside the
+    entries catches that; a changed stamp drops them all (recompiled on first call, ~2 s).
+    Installed packages never change: one stat per module at import."""
+    if _STAMPED:
+        return
+    _STAMPED.append(True)
+    where = getattr(getattr(dispatcher, "_cache", None), "_cache_path", None)
+    if not where:
+        return
+    where = Path(where)
+    stamp = _sources_stamp()
+    try:
+        if (where / STAMP_NAME).read_text() == stamp:
+            return
+    except OSError:
+        pass                                # none yet (a first run), or unreadable
+    ours = {p.stem for p in Path(__file__).resolve().parent.glob("*.py")}
+    try:
+        for entry in where.iterdir():
+            if entry.suffix in (".nbi", ".nbc") and entry.name.split(".", 1)[0] in ours:
+                entry.unlink(missing_ok=True)
+        (where / STAMP_NAME).write_text(stamp)
+    except OSError:     # a cache numba cannot write either: it compiles in memory then
+        pass
 
 
 def _tolerate_corrupt_entries(dispatcher):
@@ -115,7 +163,10 @@ def jit(signature=None, **options):
     def decorate(fn):
         args = (signature,) if signature is not None else ()
         try:
-            return _tolerate_corrupt_entries(numba.jit(*args, **opts)(fn))
+            dispatcher = numba.jit(*args, **opts)(fn)
+            if opts.get("cache"):
+                _drop_stale_entries(dispatcher)
+            return _tolerate_corrupt_entries(dispatcher)
         except RuntimeError as exc:  # "cannot cache function ...: no locator available"
             if not opts.get("cache"):
                 raise

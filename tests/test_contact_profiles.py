@@ -392,3 +392,16 @@ def test_a_flat_face_with_its_extent_is_the_flat_punch():
     assert r.ends == (-1.0, 1.0) and r.zones[0].kinds == ("corner", "corner")
     X = np.linspace(-0.9, 0.9, 7)
     assert np.allclose(r.pressure(X), ref.pressure(X), rtol=1e-12, atol=0)
+
+
+def test_a_slope_jump_without_a_break_says_to_pass_breaks():
+    """A wedge's apex (the slope jumps there) without breaks=: Newton's method for the ends
+    cannot follow it from first touch, and the error says what to pass; with the break the
+    same wedge solves, symmetric about its apex at zero friction."""
+    def wedge(breaks):
+        return contact.ProfilePunch(lambda X: 0.01 * np.sign(X), face=(-1.0, 1.0),
+                                    breaks=breaks)
+    with pytest.raises(contact.ContactLossError, match="pass its X positions as breaks="):
+        contact.solve(MAT, wedge(()), load=0.01, speed=0.0)
+    r = contact.solve(MAT, wedge((0.0,)), load=0.01, speed=0.0)
+    assert r.ends[1] == pytest.approx(-r.ends[0], rel=1e-12) and r.ends[1] > 0.0

@@ -162,3 +162,30 @@ def test_corrupt_data_files_only(reference, tmp_path):
         f.write_bytes(f.read_bytes()[: len(f.read_bytes()) // 3])   # truncated
     out = run_child(cache_dir=cache)
     same_numbers(out, reference)
+
+
+def test_entries_are_dropped_when_any_module_of_the_package_changed(reference, tmp_path):
+    """numba checks a kernel's entry against its own file alone, not against the modules of
+    the kernels it compiles into itself: after a change to any module of the package every
+    entry is dropped and compiled again (the gaussjacobi kernels here, their file untouched,
+    after a change to sie/_dd.py whose kernels they call); with nothing changed, every entry
+    is loaded as it is."""
+    pkg_root = tmp_path / "pkg"
+    shutil.copytree(REPO / "sie", pkg_root / "sie",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc", "*.stamp"))
+    cache = tmp_path / "cache"
+
+    def entries():
+        return {f.name: f.stat().st_mtime_ns for f in cache_files(cache)
+                if f.name.startswith("gaussjacobi.")}
+    same_numbers(run_child(cache_dir=cache, pythonpath=pkg_root), reference)
+    first = entries()
+    assert first and list(cache.rglob("sie-sources.stamp"))
+    same_numbers(run_child(cache_dir=cache, pythonpath=pkg_root), reference)
+    assert entries() == first                                   # nothing changed: loaded
+    dd = pkg_root / "sie" / "_dd.py"
+    dd.write_text(dd.read_text() + "\n# a change to a module of callees\n")
+    same_numbers(run_child(cache_dir=cache, pythonpath=pkg_root), reference)
+    again = entries()
+    assert again.keys() == first.keys()
+    assert all(again[name] != first[name] for name in first)    # dropped and compiled again
