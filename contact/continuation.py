@@ -184,8 +184,13 @@ def _touch(face, eq, width=1e-3):
     loads = [fill if P is None else P for P in loads]
     load0 = float(sum(loads))
     if not load0 > 0:
+        hint = "" if face.breaks else (
+            "; if its slope kinks or jumps there (a flat that ends where the face starts to "
+            "rise), pass that X as breaks=: the collocation nodes miss a slope that starts "
+            "between them")
         raise ContactLossError(
-            f"the face carries no compressive load at its lowest point(s) {face.lowest_points()}")
+            f"the face carries no compressive load at its lowest point(s) "
+            f"{face.lowest_points()}{hint}")
     totals = tuple(P if z.kappa == 1 else None for z, P in zip(zones, loads))
     return ZoneState(load0, tuple(zones), totals, None, _anchors=tuple(anchors),
                      _growth=growth, _shares=tuple(P / load0 for P in loads))

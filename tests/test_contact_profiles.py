@@ -396,12 +396,36 @@ def test_a_flat_face_with_its_extent_is_the_flat_punch():
 
 def test_a_slope_jump_without_a_break_says_to_pass_breaks():
     """A wedge's apex (the slope jumps there) without breaks=: Newton's method for the ends
-    cannot follow it from first touch, and the error says what to pass; with the break the
-    same wedge solves, symmetric about its apex at zero friction."""
+    cannot follow it from first touch, and the error says what to pass.  With the break,
+    the isotropic static wedge of slope m (Johnson, Contact Mechanics, 1985, sec. 5.8):
+    a = P / (E* m), p(x) = (E* m / pi) arccosh(a / |x|), E* = E / (1 - nu^2), to 1e-14."""
+    m, P = 0.01, 0.01
+
     def wedge(breaks):
-        return contact.ProfilePunch(lambda X: 0.01 * np.sign(X), face=(-1.0, 1.0),
-                                    breaks=breaks)
+        return contact.ProfilePunch(lambda X: m * np.sign(X), face=(-1.0, 1.0), breaks=breaks)
     with pytest.raises(contact.ContactLossError, match="pass its X positions as breaks="):
-        contact.solve(MAT, wedge(()), load=0.01, speed=0.0)
-    r = contact.solve(MAT, wedge((0.0,)), load=0.01, speed=0.0)
-    assert r.ends[1] == pytest.approx(-r.ends[0], rel=1e-12) and r.ends[1] > 0.0
+        contact.solve(MAT, wedge(()), load=P, speed=0.0)
+    E, nu = 1.0, 0.3
+    r = contact.solve(contact.Isotropic(E, nu), wedge((0.0,)), load=P, speed=0.0)
+    E_star = E / (1.0 - nu**2)
+    a = P / (E_star * m)
+    assert r.ends == pytest.approx((-a, a), rel=1e-14)
+    X = a * np.array([-0.8, -0.2, 0.05, 0.4, 0.9])
+    ref = E_star * m / math.pi * np.arccosh(a / np.abs(X))
+    assert np.allclose(r.pressure(X), ref, rtol=1e-14, atol=0)
+
+
+def test_a_flat_that_starts_to_rise_between_the_nodes_asks_for_a_break():
+    """A face flat on [-1, 0] that rises beyond 0 (its slope kinks there): the first contact,
+    [-1, 0.002], has no collocation node where the slope is not zero, carries no load, and
+    the error says to pass the kink as a break; with it, the contact is that of the face's
+    twin without the right edge (whose wider search finds the same zone), to 1e-12."""
+    slope = lambda X: np.where(X < 0.0, 0.0 * X, X)          # noqa: E731
+    with pytest.raises(contact.ContactLossError, match="pass that X as breaks="):
+        contact.solve(MAT, contact.ProfilePunch(slope, face=(-1.0, 1.0)), load=1e-4, speed=0.3)
+    r = contact.solve(MAT, contact.ProfilePunch(slope, face=(-1.0, 1.0), breaks=(0.0,)),
+                      load=1e-4, speed=0.3)
+    twin = contact.solve(MAT, contact.ProfilePunch(slope, face=(-1.0, math.inf),
+                                                   breaks=(0.0,)), load=1e-4, speed=0.3)
+    assert r.zones[0].kinds == ("corner", "free") and r.ends[0] == -1.0
+    assert r.ends[1] == pytest.approx(twin.ends[1], rel=1e-12)

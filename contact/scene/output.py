@@ -252,7 +252,9 @@ def _writing_bar(total: int, progress: bool, immediate: bool = False):
 def check_out_dir(out_dir) -> None:
     """Raise OSError, before anything is solved, when ``out_dir`` cannot receive the outputs:
     it exists and is not a directory, or it (or, when it does not exist yet, its nearest
-    existing parent) is not writable.  Nothing is created."""
+    existing parent) is not writable: a file (resp. a directory) is made there and removed
+    at once, since os.access says yes to root even where the system refuses (/proc, /sys,
+    a read-only mount).  Nothing is left behind."""
     out = Path(out_dir)
     if out.exists():
         if not out.is_dir():
