@@ -284,23 +284,53 @@ class ClosedFormSolution:
         return out if cplx else out.real
 
     # -- Hilbert transform of p -------------------------------------------------------------
-    def _R(self, s):
-        if self.kappa == 1:
-            return np.zeros_like(s)
-        if self.kappa == 0:
-            return np.ones_like(s)
-        return s + (self.beta - self.alpha)
+    def _G(self, um, up):
+        """G = F(x) - R(x) (F = (x-1)^alpha (x+1)^beta from above: w cos(pi alpha) inside,
+        +-|x-1|^alpha |x+1|^beta outside; R its polynomial part: 0, 1, x + beta - alpha for
+        kappa = 1, 0, -1), at x = s from the signed distances um = 1 - s, up = 1 + s.
+
+        F and R agree to first order in an exponent e near 0 (kappa = 0, -1), so that F - R
+        formed as it reads keeps ~1e-16 / e of itself (e = 2e-12 at friction 1e12).  Written
+        in expm1 of e log(|um| / |up|) it keeps every digit:
+            kappa = 0:  w cos(pi a) - 1 = expm1(a l) cos(pi a) - 2 sin^2(pi a / 2) inside,
+                        F - 1 = expm1(a l) outside;
+            kappa = -1: up [expm1(a l) cos(pi a) - 2 sin^2(pi a / 2)] + 2a inside, and
+                        +-|up| expm1(a l) + 2a outside (a <= 1/2); with b = 1 - a <= 1/2,
+                        -um [expm1(-b l) cos(pi b) - 2 sin^2(pi b / 2)] - 2b inside and
+                        +-|um| expm1(-b l) - 2b outside."""
+        a, b, k = self.alpha, self.beta, self.kappa
+        inside = (um > 0) & (up > 0)
+        if k == 1:
+            F = np.abs(um) ** a * np.abs(up) ** b
+            return np.where(inside, F * math.cos(math.pi * a), np.where(up > 0, F, -F))
+        ell = np.log(np.abs(um)) - np.log(np.abs(up))
+        if k == 0:
+            if abs(a) > 0.5:                  # no cancellation away from e = 0
+                F = np.exp(a * ell)
+                return np.where(inside, F * math.cos(math.pi * a), F) - 1.0
+            e = np.expm1(a * ell)
+            return np.where(inside,
+                            e * math.cos(math.pi * a) - 2.0 * math.sin(0.5 * math.pi * a) ** 2, e)
+        sign = np.where(up > 0, 1.0, -1.0)        # kappa = -1: F = -|...| left of the contact
+        if a <= 0.5:
+            e = np.expm1(a * ell)
+            return np.where(inside,
+                            up * (e * math.cos(math.pi * a)
+                                  - 2.0 * math.sin(0.5 * math.pi * a) ** 2) + 2.0 * a,
+                            sign * np.abs(up) * e + 2.0 * a)
+        e = np.expm1(-b * ell)
+        return np.where(inside,
+                        -um * (e * math.cos(math.pi * b) - 2.0 * math.sin(0.5 * math.pi * b) ** 2)
+                        - 2.0 * b,
+                        sign * np.abs(um) * e - 2.0 * b)
 
     def hilbert_pressure(self, X):
-        """Hc[p](X) = (1/pi) PV int p(t)/(t - X) dt at any real X (ValueError at a singular end).
-
-        Near the contact the formula subtracts R from w cos(pi alpha) (resp. F), which agree
-        to first order in an exponent near 0: with min(abs(alpha), abs(beta)) ~ e it keeps
-        ~1e-16 / e of relative precision (1e-12 at friction 1e4 on the Zhou 2014 material,
-        1e-4 at 1e12); the numeric path's transform keeps every digit there."""
+        """Hc[p](X) = (1/pi) PV int p(t)/(t - X) dt at any real X (ValueError at a singular end):
+        phi(s) G(s) / sin(pi alpha) + d1 mu0 / pi near the contact (:meth:`_G`, every digit
+        also with an exponent near 0), the Euler integral beyond |s| = 4."""
         X = np.asarray(X, dtype=float)
         um, up = self._one_minus_one_plus(X)
-        a, b, k = self.alpha, self.beta, self.kappa
+        a, b = self.alpha, self.beta
         if (a < 0 and np.any(um == 0)) or (b < 0 and np.any(up == 0)):
             raise ValueError(
                 f"Hc[p] (and sigma_XX) is infinite at a singular end of the contact "
@@ -309,28 +339,23 @@ class ClosedFormSolution:
         s = np.where(um < up, 1.0 - um, up - 1.0)
         d0, d1 = self.phi
         sa = self.sin_alpha
-        ca = math.cos(math.pi * a)
         mu0 = _mu0(self.alpha_p1, self.beta_p1)
         const = d1 * mu0 / math.pi
         out = np.empty(X.shape, dtype=float)
-
-        inside = (um > 0) & (up > 0)
-        if np.any(inside):
-            si = s[inside]
-            w = um[inside] ** a * up[inside] ** b
-            out[inside] = self._phi(si) * (w * ca - self._R(si)) / sa + const
-        atend = (um == 0) | (up == 0)     # bounded ends only (singular ones raised above)
-        if np.any(atend):
-            se = s[atend]
-            out[atend] = self._phi(se) * (-self._R(se)) / sa + const
         right = um < 0
         left = up < 0
-        near = (right | left) & (np.abs(s) <= _FAR)
-        if np.any(near):
-            sn = s[near]
-            Fmag = np.abs(um[near]) ** a * np.abs(up[near]) ** b
-            sign = np.where(sn > 0, 1.0, (-1.0) ** k)
-            out[near] = self._phi(sn) * (sign * Fmag - self._R(sn)) / sa + const
+        near = ~(right | left) | (np.abs(s) <= _FAR)
+        atend = (um == 0) | (up == 0)     # bounded ends only (singular ones raised above)
+        if np.any(near & ~atend):
+            m = near & ~atend
+            out[m] = self._phi(s[m]) * self._G(um[m], up[m]) / sa + const
+        if np.any(atend):
+            # F = 0 at a bounded end: G = -R, with R(+-1) = 2 beta, -2 alpha at kappa = -1
+            # (not 1 + beta - alpha, which cancels as an exponent nears 0)
+            se = s[atend]
+            R = {1: np.zeros_like(se), 0: np.ones_like(se)}.get(
+                self.kappa, np.where(se > 0, 2.0 * b, -2.0 * a))
+            out[atend] = self._phi(se) * (-R) / sa + const
         far = (right | left) & (np.abs(s) > _FAR)
         if np.any(far):
             sf = s[far]

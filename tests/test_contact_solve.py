@@ -430,8 +430,9 @@ def test_a_flat_punch_at_a_huge_friction_keeps_every_digit(friction, direction):
 def test_numeric_and_closed_form_agree_at_a_huge_friction(kind, friction, direction):
     """The other three punches with an exponent within 1e-15 of 0 or 1: numeric and closed
     form (its alpha + 1, 1 - alpha and sin(pi alpha) from the arccot of +-xi, not from a
-    rounded exponent) agree to 1e-13 in the ends, the pressure and the stresses under the
-    surface, and the residual stays at rounding."""
+    rounded exponent; its Hc[p] in expm1 where F and R agree to first order) agree to 1e-13
+    in the ends, the pressure, sigma_xx on the surface and the stresses under it, and the
+    residual stays at rounding."""
     punch = PUNCHES[kind]()
     r = contact.solve(MAT, punch, load=0.01, speed=0.3, friction=friction, direction=direction)
     c = contact.solve(MAT, punch, load=0.01, speed=0.3, friction=friction, direction=direction,
@@ -441,7 +442,11 @@ def test_numeric_and_closed_form_agree_at_a_huge_friction(kind, friction, direct
     X = r.ends[0] + width * np.array([0.1, 0.3, 0.5, 0.7, 0.9])
     assert np.allclose(r.pressure(X), c.pressure(X), rtol=1e-13, atol=0)
     assert r.residual < 1e-13
-    # the transform under the surface, from the exact shifted exponents on both paths
+    # Hc[p] on the surface (inside, next to the ends, near and far outside: sigma_xx) and
+    # the transform under the surface, every digit on both paths
+    Xs = r.ends[0] + width * np.array([-30.0, -2.0, -0.5, -0.01, 0.2, 0.6, 0.99, 1.01, 40.0])
+    sc = c.sigma_xx(Xs)
+    assert np.allclose(r.sigma_xx(Xs), sc, rtol=0, atol=1e-13 * np.max(np.abs(sc)))
     X = r.ends[0] + width * np.array([-0.5, 0.2, 0.6, 1.5])
     Y = np.full(4, -0.2 * width)
     a, b = r.stress(X, Y), c.stress(X, Y)
