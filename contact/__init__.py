@@ -8,6 +8,7 @@ path goes through :func:`sie.solve`; the paper's closed forms (corrected) are av
 ``method="closed_form"`` and serve as regression oracles.
 """
 from .constants import SurfaceConstants, limiting_speed, rayleigh_speed, surface_constants
+from .continuation import Event
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError,
                      LoadError, MaterialError, NearRayleighWarning, ProfileCallableError,
                      PunchGeometryError, SpeedError, StressPointError,
@@ -23,7 +24,8 @@ __all__ = [
     "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
-    "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "contact_length",
+    "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "Event",
+    "contact_length",
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
     "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",

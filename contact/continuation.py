@@ -89,10 +89,31 @@ class Event:
     zone : int
         Index of the affected zone among the zones just after the event (for a split, the
         left one of the two).
+    side : {"left", "right"} or None
+        For an "edge" event, which end of the zone reached the face's edge (both ends of a
+        zone that reach them at once are two events); None for the other kinds.
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 5 (non-Hertzian
+    contacts, whose extent is found with the load).
+
+    Examples
+    --------
+    A symmetric W-shaped face: its two zones merge, then both ends of the one zone reach
+    the face's edges together.
+
+    >>> import contact
+    >>> w = contact.ProfilePunch(lambda X: 0.2 * X * (X * X - 1.0),
+    ...                          height=lambda X: 0.05 * (X * X - 1.0) ** 2, face=(-2.0, 2.0))
+    >>> curve = contact.load_curve(contact.Isotropic(1.0, 0.3), w, [0.01, 2.0], speed=0.0)
+    >>> [(e.kind, e.zone, e.side) for e in curve.events]
+    [('merge', 0, None), ('edge', 0, 'left'), ('edge', 0, 'right')]
     """
     load: float
     kind: str
     zone: int
+    side: str | None = None
 
 
 @dataclass(frozen=True)
@@ -498,9 +519,9 @@ def _clip(zones, lo, hi):
 # ------------------------------------------------------------------------------------------
 def _inspect(face, eq, state):
     """The checks of a state: p >= 0 in every zone (at 64 Chebyshev points of each), the
-    gap >= 0 outside the zones (400 samples of the face; skipped for one zone on a convex
-    face, where it opens by itself), each to the resolution of the solution
-    (:func:`_resolution`)."""
+    gap >= 0 outside the zones (400 samples of the face, and the bottom of each of its own
+    valleys, :meth:`contact.face.Face.dips`; skipped for one zone on a convex face, where it
+    opens by itself), each to the resolution of the solution (:func:`_resolution`)."""
     sol = state.solution
     tol = _resolution(sol)
     ok = True
@@ -531,6 +552,17 @@ def _inspect(face, eq, state):
                     if all(not (z.c <= x <= z.d) for x in Xr for z in state.zones):
                         gv, xv = _vertex(_gap_at(face, eq, state, Xr), Xr, 1)
                 valley, valley_where = gv / rise, xv
+            # the face's own valleys, which a dip narrower than the samples' spacing hides
+            # from them: a gap below zero there fails the state, and is its valley
+            Xd = face.dips()
+            Xd = Xd[[all(not (z.c <= x <= z.d) for z in state.zones) for x in Xd.tolist()]]
+            if Xd.size:
+                gd = _gap_at(face, eq, state, Xd)
+                j = int(np.argmin(gd))
+                if gd[j] < -tol * rise:
+                    ok = False
+                    if valley is None or gd[j] / rise < valley:
+                        valley, valley_where = float(gd[j]) / rise, float(Xd[j])
     return _Checks(ok, tuple(p_inner), tuple(p_where), valley, valley_where)
 
 
@@ -718,7 +750,7 @@ def _cross_event(face, eq, state, P):
                                    [j for j, _ in where] if kind == "new zone" else ())
             if new is not None:
                 new, load = _refine_event(face, eq, lo_state, new, kind, where, located, P)
-                return new, [Event(float(load), kind, j) for j, _ in where]
+                return new, [Event(float(load), kind, j, side) for j, side in where]
         if rel == _PAST[0]:
             # an extrapolated zero that was not the failure: the old zones go on
             new = _try_step(face, eq, lo_state, P_new)
@@ -819,7 +851,7 @@ def _bisect_event(face, eq, state, P):
             new = _solve_candidate(face, eq, zones, totals, hi_load)
             if new is not None:
                 load = math.sqrt(lo_state.load * hi_load)
-                return new, [Event(float(load), kind, j) for j, _ in where]
+                return new, [Event(float(load), kind, j, side) for j, side in where]
         if hi_load / lo_state.load - 1.0 <= _MIN_RATIO:
             raise ContactLossError(
                 f"the contact zones cannot be followed past load {lo_state.load:.6g} (zones "

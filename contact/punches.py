@@ -156,11 +156,15 @@ class Punch:
                 math.inf if right is None else float(right))
 
     def as_face(self):
-        """The face as the multi-zone contact search sees it (:class:`contact.face.Face`)."""
-        from .face import Face
-        return Face(self.slope, extent=self.extent, breaks=self.breaks,
-                    height=self.height if self.has_height else None, convex=self.convex,
-                    homogeneous=self.homogeneous)
+        """The face as the multi-zone contact search sees it (:class:`contact.face.Face`),
+        made once per punch (what it finds of itself, its valleys, is kept with it)."""
+        face = getattr(self, "_face", None)
+        if face is None:
+            from .face import Face
+            face = self._face = Face(self.slope, extent=self.extent, breaks=self.breaks,
+                                     height=self.height if self.has_height else None,
+                                     convex=self.convex, homogeneous=self.homogeneous)
+        return face
 
     @property
     def ends(self) -> tuple:

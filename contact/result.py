@@ -374,7 +374,10 @@ class ContactResult:
         region : ((X_min, X_max), (Y_min, Y_max)), optional
             Default: X within a of the contact's outer ends (x_left of the first zone,
             x_right of the last), 0 >= Y >= -3 a, with a = :attr:`zone_scale` (the largest
-            zone's half-width; the half-width for one zone).
+            zone's half-width; the half-width for one zone).  With several zones, each
+            zone's own part of the region (X within h of its ends, 0 >= Y >= -3 h, h its
+            half-width) is searched alike as well, so that a zone narrower than the grid's
+            spacing over the whole region is not missed; the largest of all is returned.
         grid : (int, int)
             Grid points in X and Y (>= 3 each).
 
@@ -392,11 +395,17 @@ class ContactResult:
         ContactInputError
             A region that is empty, not finite or above Y = 0; a grid below 3 x 3.
         """
-        from .subsurface import UnboundedStressError, field_extrema
+        from .subsurface import StressExtrema, UnboundedStressError, field_extrema
         xl, xr = self.zones[0].ends[0], self.zones[-1].ends[1]
         a = self.zone_scale
         if region is None:
             region = ((xl - a, xr + a), (-3.0 * a, 0.0))
+        try:
+            nx, ny = (int(g) for g in grid)
+        except (TypeError, ValueError):
+            raise ContactInputError(f"grid must be (nx, ny), got {grid!r}") from None
+        if nx < 3 or ny < 3:
+            raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
         try:
             (x0, x1), (y0, y1) = region
             x0, x1, y0, y1 = (float(v) for v in (x0, x1, y0, y1))
@@ -406,12 +415,6 @@ class ContactResult:
         if not all(np.isfinite([x0, x1, y0, y1])) or not (x0 < x1 and y0 < y1 <= 0.0):
             raise ContactInputError(f"region must be finite with X_min < X_max and "
                                     f"Y_min < Y_max <= 0, got {region!r}")
-        try:
-            nx, ny = (int(g) for g in grid)
-        except (TypeError, ValueError):
-            raise ContactInputError(f"grid must be (nx, ny), got {grid!r}") from None
-        if nx < 3 or ny < 3:
-            raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
         if y1 == 0.0:
             for end, e in self.singular_ends:
                 if x0 <= end <= x1:
@@ -419,11 +422,23 @@ class ContactResult:
                         f"the stresses are infinite at the singular contact end "
                         f"X = {end!r} (exponent {e:.6g}), inside the region {region!r}; "
                         f"use the zones' SIFs there, or a region with Y_max < 0")
+        checked = [((x0, x1), (y0, y1))]
+        for z in self.zones if len(self.zones) > 1 else ():
+            h = z.width / 2
+            part = ((max(x0, z.ends[0] - h), min(x1, z.ends[1] + h)),
+                    (max(y0, -3.0 * h), y1))
+            if part[0][0] < part[0][1] and part[1][0] < part[1][1]:
+                checked.append(part)
 
         def half_width_at(X):
             return min(self.zones, key=lambda z: max(z.ends[0] - X, X - z.ends[1], 0.0)).width / 2
 
-        return field_extrema(self.stress, ((x0, x1), (y0, y1)), half_width_at, (nx, ny))
+        found = [field_extrema(self.stress, reg, half_width_at, (nx, ny)) for reg in checked]
+        if len(found) == 1:
+            return found[0]
+        return StressExtrema(max((f.max_shear for f in found), key=lambda e: e.value),
+                             max((f.max_tension for f in found), key=lambda e: e.value),
+                             checked[0])
 
 
 class _ClosedFormContactResult(ContactResult):
@@ -497,8 +512,8 @@ class LoadCurve:
         The contact at each load (zones, pressure, fields).
     events : tuple
         Where the zones changed between first touch and the last load, in load order
-        (:class:`contact.continuation.Event`: load, kind "new zone" / "merge" / "edge" /
-        "split", zone index).
+        (:class:`contact.Event`: load, kind "new zone" / "merge" / "edge" / "split", zone
+        index, and for an edge which end).
     zone_count : ndarray of int
         Number of contact zones at each load.
     contact_length : ndarray

@@ -497,7 +497,8 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
 
     What a user plots as contact width against load: the zones are followed through the
     loads in ascending order, and where they change (a new zone, a merge, an end reaching
-    an edge of the face) the load is located by bisection and recorded in ``events``.
+    an edge of the face) the load is located (by extrapolating what reaches zero there,
+    bisection where that fails; :mod:`contact.continuation`) and recorded in ``events``.
     Each result is what :func:`solve` returns at that load (the same adaptive n per load).
 
     Parameters

@@ -296,3 +296,54 @@ def test_refined_state_that_cannot_pass_its_checks_raises(monkeypatch):
     monkeypatch.setattr(S, "inspect_state", lambda face, eq, st: False)
     with pytest.raises(contact.ContactLossError, match=r"violate p >= 0 or the gap"):
         contact.solve(contact.zhou2014(), w, load=1e-2, speed=0.3, friction=0.3)
+
+
+def _gap_by_quadrature(r, height, X, K=3000):
+    """g(X) = H(X) - H(c) + N11 (V(X) - V(c)) (static, frictionless), c the left end of the
+    first zone, V = (1/pi) int p log|X - t| dt by the midpoint rule in theta on each zone
+    (t = c + w (1 - cos theta) / 2): the library's pressure, its own gap formula unused."""
+    th = (np.arange(K) + 0.5) * np.pi / K
+    nodes = []
+    for z in r.zones:
+        a, b = z.ends
+        t = a + (b - a) * (1.0 - np.cos(th)) / 2.0
+        nodes.append((t, (b - a) / 2.0 * np.sin(th) * np.pi / K * r.pressure(t)))
+
+    def V(x):
+        return sum((np.log(np.abs(x[:, None] - t[None, :])) * pw).sum(1)
+                   for t, pw in nodes) / np.pi
+    ref = np.array([r.zones[0].ends[0]])
+    return height(X) - height(ref)[0] + r.constants.N11 * (V(X) - V(ref)[0])
+
+
+def test_a_dip_narrower_than_the_gap_samples_is_not_pressed_through():
+    """A face with a dip 0.008 wide (about the spacing of the gap's 400 samples) 0.0105
+    above its lowest point: the dip touches as a zone of its own, and the gap, computed by
+    quadrature at 4001 points, is nowhere below zero (it was -0.029 at the dip, one zone
+    returned as valid: the dip fell between the samples)."""
+    c0, w0, d0 = 1.0125, 0.004, 0.04
+
+    def height(X):
+        return 0.05 * X**2 - d0 * np.exp(-((X - c0) / w0) ** 2)
+
+    def slope(X):
+        return 0.1 * X + d0 * 2.0 * (X - c0) / w0**2 * np.exp(-((X - c0) / w0) ** 2)
+    face = contact.ProfilePunch(slope, height=height, face=(-2.0, 2.0))
+    r = contact.solve(contact.Isotropic(1.0, 0.3), face, load=0.05, speed=0.0)
+    assert len(r.zones) == 2 and r.zones[1].ends[0] < c0 < r.zones[1].ends[1]
+    X = np.linspace(-2.0, 2.0, 4001)
+    X = X[[not any(z.ends[0] <= x <= z.ends[1] for z in r.zones) for x in X]]
+    assert np.min(_gap_by_quadrature(r, height, X)) > -1e-9
+
+
+def test_edge_events_say_which_end_reached_the_edge():
+    """The symmetric W face without friction: the two zones merge, then both ends of the one
+    zone reach the face's edges at the same load: two edge events, told apart by their side
+    (they were two identical entries)."""
+    w = contact.ProfilePunch(lambda X: 0.2 * X * (X * X - 1.0),
+                             height=lambda X: 0.05 * (X * X - 1.0) ** 2, face=(-2.0, 2.0))
+    curve = contact.load_curve(contact.Isotropic(1.0, 0.3), w, [0.01, 0.5, 2.0], speed=0.0)
+    kinds = [(e.kind, e.zone, e.side) for e in curve.events]
+    assert kinds == [("merge", 0, None), ("edge", 0, "left"), ("edge", 0, "right")]
+    assert curve.events[1].load == curve.events[2].load
+    assert curve.results[-1].zones[0].ends == (-2.0, 2.0)

@@ -100,6 +100,24 @@ def test_hertz_max_shear_extremum():
     assert e.max_shear.depth == pytest.approx(-e.max_shear.Y)
 
 
+@pytest.mark.parametrize("load", [1e-5, 1e-3])
+def test_the_extrema_of_two_small_far_apart_zones_are_each_hertz(load):
+    """The W face (curvature 0.4 at its valleys X = +-1) at loads where each of its two
+    zones is a Hertz contact far (>> a) from the other: the largest shear is that of Hertz,
+    0.30028 p0 at 0.786 a (Johnson sec. 4.6), found although a zone is narrower than the
+    spacing of the grid over both (at load 1e-5 it was 0.2326 p0 at 1.725 a: no grid point
+    came near a zone)."""
+    w = contact.ProfilePunch(lambda X: 0.2 * X * (X * X - 1.0),
+                             height=lambda X: 0.05 * (X * X - 1.0) ** 2, face=(-2.0, 2.0))
+    r = contact.solve(ISO, w, load=load, speed=0.0)
+    assert len(r.zones) == 2 and r.zones[0].width < 0.1 * (r.zones[1].ends[0] - r.zones[0].ends[1])
+    z = r.zones[1]
+    p0 = float(np.max(r.pressure(np.linspace(*z.ends, 2001)[1:-1])))
+    e = r.stress_extrema()
+    assert e.max_shear.value / p0 == pytest.approx(0.30028, rel=2e-3)
+    assert e.max_shear.depth_over_a == pytest.approx(0.78615, rel=1e-2)
+
+
 def _hertz_core(mu):
     return lambda X, Y: half_space_stress(ISO, 0.0, X, np.minimum(Y, -1e-300),
                                           lambda z: np.sqrt(z - 1) * np.sqrt(z + 1) - z,

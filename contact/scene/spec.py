@@ -73,6 +73,7 @@ UNITS = {
     "diagnostics: residual, load_check": "dimensionless (relative)",
 }
 
+#: The default scene (``contact run`` without a scene file; ``make run``), as TOML text.
 DEFAULT_SCENE_TOML = '''\
 # The default scene (`contact run` without a scene file; `make run`): the paper's material,
 # a cylindrical punch of radius 100 pressed with P = 0.01 and sliding toward -X at c = 0.6 with
