@@ -546,11 +546,15 @@ def _inspect(face, eq, state):
             if k is not None:
                 gv, xv = _vertex(g, X, k)
                 if gv < _NEAR_VALLEY * rise and 0 < k < g.size - 1:
-                    # close to touching: the vertex again from points 16 times closer
+                    # close to touching: the vertex again from points 16 times closer; a
+                    # valley below zero between the samples fails the state as one at them
                     h = (X[k + 1] - X[k - 1]) / 32.0
                     Xr = np.array([xv - h, xv, xv + h])
                     if all(not (z.c <= x <= z.d) for x in Xr for z in state.zones):
-                        gv, xv = _vertex(_gap_at(face, eq, state, Xr), Xr, 1)
+                        gr = _gap_at(face, eq, state, Xr)
+                        gv, xv = _vertex(gr, Xr, 1)
+                        if np.min(gr) < -tol * rise:
+                            ok = False
                 valley, valley_where = gv / rise, xv
             # the face's own valleys, which a dip narrower than the samples' spacing hides
             # from them: a gap below zero there fails the state, and is its valley

@@ -347,3 +347,28 @@ def test_edge_events_say_which_end_reached_the_edge():
     assert kinds == [("merge", 0, None), ("edge", 0, "left"), ("edge", 0, "right")]
     assert curve.events[1].load == curve.events[2].load
     assert curve.results[-1].zones[0].ends == (-2.0, 2.0)
+
+
+def test_a_new_zone_is_found_where_the_gap_closes_not_past_it():
+    """The tilted W face: a second zone appears at Pe.  Just past Pe (1e-5 and 3e-5 of it)
+    the result has two zones and the gap, by quadrature, is nowhere below zero (one zone
+    was returned there, pressing 1.6e-7 and 6.8e-7 into the face between the gap's samples:
+    the valley's refinement was not part of the check); and the event's load is the same,
+    to 1e-6, whichever loads the curve is asked for (it was placed 3e-5 late by loads next
+    to it)."""
+    def height(X):
+        return 0.05 * (X * X - 1.0) ** 2 + 0.01 * X
+    face = contact.ProfilePunch(lambda X: 0.2 * X * (X * X - 1.0) + 0.01, height=height,
+                                face=(-2.0, 2.2))
+    iso = contact.Isotropic(1.0, 0.3)
+    wide = contact.load_curve(iso, face, np.geomspace(1e-4, 3.0, 16), speed=0.0)
+    Pe = next(e.load for e in wide.events if e.kind == "new zone")
+    near = contact.load_curve(iso, face, Pe * np.array([0.5, 1 + 1e-5, 1 + 3e-5, 1 + 1e-4]),
+                              speed=0.0)
+    (event,) = near.events
+    assert event.kind == "new zone" and event.load == pytest.approx(Pe, rel=1e-6)
+    for r in near.results[1:3]:
+        assert len(r.zones) == 2
+        X = np.linspace(0.9, 1.1, 401)
+        X = X[[not any(z.ends[0] <= x <= z.ends[1] for z in r.zones) for x in X]]
+        assert np.min(_gap_by_quadrature(r, height, X)) > -1e-10
