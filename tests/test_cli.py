@@ -288,9 +288,7 @@ def test_a_cluster_that_loses_every_worker_during_a_sweep_is_said(tmp_path):
                  f"{str(out)!r}]))\n")
         with open(err_path, "w") as err:
             proc = subprocess.Popen([sys.executable, "-c", child], env=child_env(), stderr=err,
-                                    start_new_session=True,
-                                    preexec_fn=lambda: signal.signal(signal.SIGINT,
-                                                                     signal.SIG_DFL))
+                                    start_new_session=True, preexec_fn=_as_from_a_terminal)
         try:
             deadline = time.monotonic() + 60                # the sweep's chunks reach it
             while not cluster.scheduler.tasks and time.monotonic() < deadline:
@@ -349,6 +347,18 @@ def _endless_sweep(tmp_path):
     return scene
 
 
+def _as_from_a_terminal():
+    """preexec_fn of an endless run: SIGINT at its default (as a command started from a
+    terminal has it; a background job's children ignore it), and, on Linux, SIGTERM to it
+    when the test's process ends, however that ends (PR_SET_PDEATHSIG): an endless run
+    never outlives an interrupted test session."""
+    import ctypes
+    import signal
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        ctypes.CDLL(None).prctl(1, int(signal.SIGTERM), 0, 0, 0)
+
+
 def _children(pid):
     """The pids of the processes whose parent is ``pid`` (from /proc)."""
     kids = []
@@ -366,14 +376,12 @@ def _children(pid):
 def _running_pool(tmp_path, jobs=2):
     """``contact run`` of the endless sweep with ``--jobs`` in a session of its own (SIGINT
     at its default, as in a terminal), once its ``jobs`` workers solve: (process, --out)."""
-    import signal
     import time
     out = tmp_path / "out"
     proc = subprocess.Popen([sys.executable, "-m", "contact", "run", str(_endless_sweep(tmp_path)),
                              "--quiet", "--no-figures", "--jobs", str(jobs), "--out", str(out)],
                             env=child_env(), stderr=subprocess.PIPE, text=True,
-                            start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+                            start_new_session=True, preexec_fn=_as_from_a_terminal)
     deadline = time.monotonic() + 120
     while len(_children(proc.pid)) < jobs and time.monotonic() < deadline:
         time.sleep(0.05)
