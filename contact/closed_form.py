@@ -166,6 +166,12 @@ def _mu0(ap1: float, bp1: float) -> float:
             / math.gamma(ap1 + bp1))
 
 
+def _cos_expm1(e, t):
+    """e^x cos(pi t) - 1 from e = expm1(x): e cos(pi t) - 2 sin^2(pi t / 2), which keeps
+    every digit as x and t tend to 0 (formed as it reads, it cancels)."""
+    return e * math.cos(math.pi * t) - 2.0 * math.sin(0.5 * math.pi * t) ** 2
+
+
 def _euler_J(ap1: float, bp1: float, x: np.ndarray) -> np.ndarray:
     """J(x) = int_{-1}^{1} (1-t)^alpha (1+t)^beta / (t - x) dt for |x| >= _FAR (vectorised),
     alpha = ap1 - 1, beta = bp1 - 1.
@@ -309,19 +315,14 @@ class ClosedFormSolution:
                 F = np.exp(a * ell)
                 return np.where(inside, F * math.cos(math.pi * a), F) - 1.0
             e = np.expm1(a * ell)
-            return np.where(inside,
-                            e * math.cos(math.pi * a) - 2.0 * math.sin(0.5 * math.pi * a) ** 2, e)
+            return np.where(inside, _cos_expm1(e, a), e)
         sign = np.where(up > 0, 1.0, -1.0)        # kappa = -1: F = -|...| left of the contact
         if a <= 0.5:
             e = np.expm1(a * ell)
-            return np.where(inside,
-                            up * (e * math.cos(math.pi * a)
-                                  - 2.0 * math.sin(0.5 * math.pi * a) ** 2) + 2.0 * a,
+            return np.where(inside, up * _cos_expm1(e, a) + 2.0 * a,
                             sign * np.abs(up) * e + 2.0 * a)
         e = np.expm1(-b * ell)
-        return np.where(inside,
-                        -um * (e * math.cos(math.pi * b) - 2.0 * math.sin(0.5 * math.pi * b) ** 2)
-                        - 2.0 * b,
+        return np.where(inside, -um * _cos_expm1(e, b) - 2.0 * b,
                         sign * np.abs(um) * e - 2.0 * b)
 
     def hilbert_pressure(self, X):

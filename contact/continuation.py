@@ -54,6 +54,7 @@ import numpy as np
 import sie
 
 from .errors import ContactLossError
+from .face import outside
 from .zones import CORNER, FREE, Zone, ZoneEquations, _ordered
 
 __all__ = ["Event", "ZoneState", "first_touch", "follow_load", "EVENT_KINDS"]
@@ -537,7 +538,7 @@ def _inspect(face, eq, state):
         p_where.append(float(X[k]))
     valley = valley_where = None
     if not (face.convex and len(state.zones) == 1):
-        g, X = _gap_samples(face, eq, state)
+        g, X, gd, Xd = _gap_samples(face, eq, state)
         if g.size:
             rise = face.rise_scale(state)
             if np.min(g) < -tol * rise:
@@ -550,7 +551,7 @@ def _inspect(face, eq, state):
                     # valley below zero between the samples fails the state as one at them
                     h = (X[k + 1] - X[k - 1]) / 32.0
                     Xr = np.array([xv - h, xv, xv + h])
-                    if all(not (z.c <= x <= z.d) for x in Xr for z in state.zones):
+                    if np.all(outside(state.zones, Xr)):
                         gr = _gap_at(face, eq, state, Xr)
                         gv, xv = _vertex(gr, Xr, 1)
                         if np.min(gr) < -tol * rise:
@@ -558,10 +559,7 @@ def _inspect(face, eq, state):
                 valley, valley_where = gv / rise, xv
             # the face's own valleys, which a dip narrower than the samples' spacing hides
             # from them: a gap below zero there fails the state, and is its valley
-            Xd = face.dips()
-            Xd = Xd[[all(not (z.c <= x <= z.d) for z in state.zones) for x in Xd.tolist()]]
-            if Xd.size:
-                gd = _gap_at(face, eq, state, Xd)
+            if gd.size:
                 j = int(np.argmin(gd))
                 if gd[j] < -tol * rise:
                     ok = False
@@ -645,11 +643,16 @@ def _gap_samples(face, eq, state, m=400):
     """The gap g = H - v - v0 at points of the face outside the zones, from g(c_1) = 0:
     v' = N12 mu_f p + N11 Hc[p], so across the zones left of X the friction term adds
     N12 mu_f times their loads, and
-        g(X) = H(X) - H(c_1) - N12 mu_f int_{c_1}^X p + N11 (V(X) - V(c_1))."""
+        g(X) = H(X) - H(c_1) - N12 mu_f int_{c_1}^X p + N11 (V(X) - V(c_1)).
+    (g, X, gd, Xd): at ``m`` samples X of the face, and at the bottom Xd of each of its own
+    valleys outside the zones (:meth:`contact.face.Face.dips`), in one evaluation."""
     X = face.sample_points(state.zones, m)
     if X.size == 0:
-        return X, X
-    return _gap_at(face, eq, state, X), X
+        return X, X, X, X
+    Xd = face.dips()
+    Xd = Xd[outside(state.zones, Xd)]
+    g = _gap_at(face, eq, state, np.concatenate([X, Xd]))
+    return g[:X.size], X, g[X.size:], Xd
 
 
 def _gap_at(face, eq, state, X):

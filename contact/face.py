@@ -16,6 +16,14 @@ _GL = np.polynomial.legendre.leggauss(24)
 _DIP_SAMPLES = 8001
 
 
+def outside(zones, X):
+    """Mask of the points ``X`` that lie in none of ``zones`` (ends included)."""
+    inside = np.zeros(np.shape(X), dtype=bool)
+    for z in zones:
+        inside |= (X >= z.c) & (X <= z.d)
+    return ~inside
+
+
 def _end_between(breaks, a, b, default):
     inside = [x for x in breaks if a <= x <= b]
     return inside[0] if inside else default
@@ -169,9 +177,7 @@ class Face:
             runs[k:j + 1] = j > k
         for k in np.flatnonzero((dH[:-1] < 0) & (dH[1:] >= 0) & ~runs[1:]):
             if dH[k + 1] > 0:               # the root of H' (a sign change: Brent)
-                from scipy.optimize import brentq   # here: ~0.15 s of every start otherwise
-                x0 = brentq(lambda x: float(self.slope(np.array([x]))[0]), X[k], X[k + 1],
-                            xtol=1e-15 * max(1.0, abs(X[k])), rtol=4 * np.finfo(float).eps)
+                x0 = self._slope_zero(X[k], X[k + 1])
             else:
                 x0 = X[k + 1]
             if k + 1 == m - 1 and math.isfinite(self.extent[1]):
@@ -234,6 +240,12 @@ class Face:
             return [(x, "right-edge")]
         return [(x, "interior")]
 
+    def _slope_zero(self, a, b):
+        """The zero of the slope between a and b, where it changes sign (Brent's method)."""
+        from scipy.optimize import brentq   # here: ~0.15 s of every start otherwise
+        return brentq(lambda x: float(self.slope(np.array([x]))[0]), a, b,
+                      xtol=1e-15 * max(1.0, abs(a)), rtol=4 * np.finfo(float).eps)
+
     # -- the gap -----------------------------------------------------------------------------
     def dips(self):
         """X of every valley of the face: the local minima of H (its slope from - to +
@@ -247,10 +259,8 @@ class Face:
             X = np.linspace(a, b, _DIP_SAMPLES)
             dH = self.slope(X)
             out = [x for x in self.breaks if a < x < b]
-            for k in np.flatnonzero((dH[:-1] < 0) & (dH[1:] > 0)).tolist():
-                from scipy.optimize import brentq   # here: ~0.15 s of every start otherwise
-                out.append(brentq(lambda x: float(self.slope(np.array([x]))[0]), X[k],
-                                  X[k + 1], xtol=1e-12 * max(1.0, abs(X[k]))))
+            out += [self._slope_zero(X[k], X[k + 1])
+                    for k in np.flatnonzero((dH[:-1] < 0) & (dH[1:] > 0)).tolist()]
             self._dips = np.array(sorted(out))
         return self._dips
 
@@ -260,10 +270,7 @@ class Face:
         a = min(a, zones[0].c)
         b = max(b, zones[-1].d)
         X = np.linspace(a, b, m)
-        inside = np.zeros(m, dtype=bool)
-        for z in zones:
-            inside |= (X >= z.c) & (X <= z.d)
-        return X[~inside]
+        return X[outside(zones, X)]
 
     def rise_scale(self, state):
         X = np.concatenate([z.c + z.width * np.linspace(0.0, 1.0, 9) for z in state.zones])

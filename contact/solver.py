@@ -359,7 +359,7 @@ def _signed_friction(const, friction, direction) -> float:
     try:
         check_coefficients(const.N12 * mu_f, const.N11)
     except sie.InvalidCoefficientError:
-        limit = MIN_B_OVER_A ** -1 * abs(const.N11 / const.N12)
+        limit = abs(const.N11 / const.N12) / MIN_B_OVER_A
         raise FrictionError(
             f"friction = {friction!r} puts an end exponent of the pressure within rounding "
             f"of -1 or 1 in double precision (|N12 friction / N11| = "

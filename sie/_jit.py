@@ -88,11 +88,10 @@ _STAMPED: list = []
 STAMP_NAME = "sie-sources.stamp"
 
 
-def _sources_stamp() -> str:
+def _sources_stamp(modules) -> str:
     """(name, size, mtime) of every module of the package, as one line."""
-    here = Path(__file__).resolve().parent
     return repr(sorted((p.name, st.st_size, st.st_mtime_ns)
-                       for p in here.glob("*.py") for st in (p.stat(),)))
+                       for p in modules for st in (p.stat(),)))
 
 
 def _drop_stale_entries(dispatcher):
@@ -112,13 +111,14 @@ def _drop_stale_entries(dispatcher):
     if not where:
         return
     where = Path(where)
-    stamp = _sources_stamp()
+    modules = list(Path(__file__).resolve().parent.glob("*.py"))
+    stamp = _sources_stamp(modules)
     try:
         if (where / STAMP_NAME).read_text() == stamp:
             return
     except OSError:
         pass                                # none yet (a first run), or unreadable
-    ours = {p.stem for p in Path(__file__).resolve().parent.glob("*.py")}
+    ours = {p.stem for p in modules}
     try:
         for entry in where.iterdir():
             if entry.suffix in (".nbi", ".nbc") and entry.name.split(".", 1)[0] in ours:

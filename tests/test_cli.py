@@ -356,7 +356,7 @@ def _as_from_a_terminal():
     import signal
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     if sys.platform.startswith("linux"):
-        ctypes.CDLL(None).prctl(1, int(signal.SIGTERM), 0, 0, 0)
+        ctypes.CDLL(None).prctl(cli._PR_SET_PDEATHSIG, int(signal.SIGTERM), 0, 0, 0)
 
 
 def _children(pid):
