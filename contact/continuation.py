@@ -53,7 +53,7 @@ import numpy as np
 
 import sie
 
-from .errors import ContactLossError
+from .errors import ContactLossError, PunchGeometryError
 from .face import outside
 from .zones import CORNER, FREE, Zone, ZoneEquations, _ordered
 
@@ -74,6 +74,7 @@ _PAST = (1e-6, 1e-4, 1e-2)   # relative distances past an event where the new zo
 _HISTORY = 4          # states (this one and earlier ones) the predictor extrapolates from
 _NEAR_VALLEY = 1e-2    # a valley of the gap below this (relative) is located more closely
 _BUDGET = 16           # residual evaluations a continuation step may spend, plus 2 per unknown
+_GAP_N = 4.0           # n >= _GAP_N sqrt(w / g) next to a gap g between zones of width w
 
 
 @dataclass(frozen=True)
@@ -284,13 +285,29 @@ def _solve_at(face, eq, zones, totals, P, jacobian=None, like=None, previous=Non
               budget=None):
     """The zones at load P by Newton from ``zones``; anchors and growth from ``like``."""
     lo, hi = face.extent
-    e = replace(eq, load=P)
+    e = replace(eq, load=P, n=_n_for_gaps(eq, zones))
     zs, ts, sol, J = e.solve_ends(zones, totals, lo=lo, hi=hi, jacobian=jacobian,
                                   budget=budget)
     same = like is not None and len(like.zones) == len(zs)
     return ZoneState(P, tuple(zs), tuple(ts), sol, J, _anchors=like._anchors if same else None,
                      _growth=like._growth if same else None, _previous=previous,
                      _origin=like._origin if same else 0.0)
+
+
+def _n_for_gaps(eq, zones):
+    """eq.n, doubled (up to ``eq.n_max``) until it is at least _GAP_N sqrt(w / g) for the
+    narrowest gap g between two zones and the wider w of the two: the pressure next to a
+    free end across a gap varies on the scale of the gap, which a series of n terms resolves
+    once n^2 g / w is large (a gap that closes like the square root of the load to go, as
+    two zones merge, would otherwise leave Newton's method unresolved states to follow)."""
+    n = eq.n
+    n_max = eq.n_max if eq.n_max is not None else eq.n
+    for z0, z1 in zip(zones[:-1], zones[1:]):
+        g = z1.c - z0.d
+        need = _GAP_N * math.sqrt(max(z0.width, z1.width) / g) if g > 0.0 else math.inf
+        while n < need and 2 * n <= n_max:
+            n *= 2
+    return n
 
 
 def _extrapolate(xs, loads, anchor, P, origin=0.0):
@@ -531,7 +548,7 @@ def _inspect(face, eq, state):
         X = z.points(_CHECK_U)
         p = _check_weight(piece.alpha, piece.beta) * piece.phi_local(_CHECK_U)
         top = max(float(np.max(np.abs(p))), np.finfo(float).tiny)
-        if np.min(p) < -tol * top:
+        if min(float(np.min(p)), _lowest_dip(piece, p, top)) < -tol * top:
             ok = False
         k = int(np.argmin(np.where(_INNER, p, np.inf)))
         p_inner.append(float(p[k]) / top)
@@ -566,6 +583,33 @@ def _inspect(face, eq, state):
                     if valley is None or gd[j] / rise < valley:
                         valley, valley_where = float(gd[j]) / rise, float(Xd[j])
     return _Checks(ok, tuple(p_inner), tuple(p_where), valley, valley_where)
+
+
+def _lowest_dip(piece, p, top):
+    """The lowest pressure in the dips of one zone's pressure ``p`` at the check points:
+    each interior local minimum among them below 1e-2 of ``top`` polished by parabolas
+    through three points, the spacing cut by 8 each time (a pressure that turns negative
+    between the check points, as one zone just below the load where two merge, is found);
+    inf where there is no such dip."""
+    out = math.inf
+    dips = np.flatnonzero((p[1:-1] <= p[:-2]) & (p[1:-1] <= p[2:]) & (p[1:-1] < 1e-2 * top)) + 1
+    for k in dips.tolist():
+        u0 = float(_CHECK_U[k])
+        h = 0.5 * min(_CHECK_U[k - 1] - u0, u0 - _CHECK_U[k + 1])
+        for _ in range(6):
+            u = np.array([u0 - h, u0, u0 + h])
+            if not (-1.0 < u[0] and u[-1] < 1.0):
+                break
+            pm, p0, pp = (1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta * piece.phi_local(u)
+            out = min(out, pm, p0, pp)
+            curv = pp - 2.0 * p0 + pm
+            if curv > 0.0:
+                u0 += min(max(-0.5 * h * (pp - pm) / curv, -h), h)
+            h *= 0.125
+        u = np.array([u0])
+        out = min(out, float(((1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta
+                              * piece.phi_local(u))[0]))
+    return out
 
 
 def inspect_state(face, eq, state):
@@ -651,16 +695,37 @@ def _gap_samples(face, eq, state, m=400):
         return X, X, X, X
     Xd = face.dips()
     Xd = Xd[outside(state.zones, Xd)]
-    g = _gap_at(face, eq, state, np.concatenate([X, Xd]))
+    Xa = np.concatenate([X, Xd])
+    rise = face.rise_from(state.zones[0].c, Xa)
+    g = _gap_at(face, eq, state, Xa, rise)
+    _stays_open(face, X, g[:X.size], rise[:X.size])
     return g[:X.size], X, g[X.size:], Xd
 
 
-def _gap_at(face, eq, state, X):
-    """The gap at points X outside the zones (see :func:`_gap_samples`)."""
+def _stays_open(face, X, g, rise):
+    """PunchGeometryError where the face, at the outermost gap sample on a side without an
+    edge, has not risen above the first zone's end by twice the surface's displacement
+    there (rise - g: the half-space's deflection, which grows like the logarithm of the
+    distance): beyond it a face that rises on (:meth:`contact.face.Face.scan`) stays clear
+    of the surface; a face that does not rise that far cannot be shown to."""
+    lo, hi = face.extent
+    for k, edge, name in ((0, lo, "-X"), (-1, hi, "+X")):
+        if math.isfinite(edge) or not rise[k] > 0.0 or g[k] >= 0.5 * rise[k]:
+            continue
+        raise PunchGeometryError(
+            f"the face rises only {rise[k]:.3g} above the contact toward {name} out to X = "
+            f"{X[k]:.6g}, less than twice the half-space's deflection there "
+            f"({rise[k] - g[k]:.3g}): contact cannot be shown to stay away from it beyond; "
+            "give the face's extent (face=) where it ends")
+
+
+def _gap_at(face, eq, state, X, rise=None):
+    """The gap at points X outside the zones (see :func:`_gap_samples`); ``rise``: H(X) -
+    H(c_1) where known."""
     zones, sol = state.zones, state.solution
     ref = zones[0].c
     V = sol.log_potential(np.concatenate([[ref], X]))
-    g = face.rise_from(ref, X) + eq.b * (V[1:] - V[0])
+    g = (face.rise_from(ref, X) if rise is None else rise) + eq.b * (V[1:] - V[0])
     if eq.a != 0.0:
         loads = [sol.integral(interval=j) for j in range(len(zones))] if len(zones) > 1 \
             else [sol.integral()]
@@ -811,20 +876,25 @@ def _refine_event(face, eq, lo_state, new, kind, where, located, P):
     :func:`_reverse_indicator` extrapolated linearly from the two to zero.  Returns that
     second state (or ``new``) and the load (``located`` where the extrapolation does not
     land between the last old and the second new load)."""
-    P2 = min(new.load + (new.load - lo_state.load), P)
-    second = _try_step(face, eq, new, P2) if P2 > new.load else None
-    if kind == "new zone" and second is not None:
-        return second, located      # (a new zone's load is not linear in the load)
+    P2 = new.load + (new.load - lo_state.load)
+    if kind == "new zone":
+        # (a new zone's load is not linear in the load: no extrapolation from this side)
+        second = _try_step(face, eq, new, P2) if P2 <= P else None
+        return (new if second is None else second), located
+    # the second state may lie past P (where the load curve stops): it then serves the
+    # extrapolation alone, and the state returned is ``new``
+    second = _try_step(face, eq, new, P2)
     if second is None:
         return new, located
+    keep = second if P2 <= P else new
     v1 = _reverse_indicator(kind, where, new)
     v2 = _reverse_indicator(kind, where, second)
     if not v2 > v1:
-        return second, located
+        return keep, located
     root = new.load - v1 * (second.load - new.load) / (v2 - v1)
     if not lo_state.load * (1.0 - 1e-12) <= root <= second.load * (1.0 + 1e-12):
-        return second, located
-    return second, min(max(root, lo_state.load), second.load)
+        return keep, located
+    return keep, min(max(root, lo_state.load), keep.load)
 
 
 def _solve_candidate(face, eq, zones, totals, P, origin=0.0, young=()):

@@ -4,16 +4,67 @@ lowest points, and where to look for the gap.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import PunchGeometryError
+from .errors import ProfileCallableError, PunchGeometryError
 
-__all__ = ["Face"]
+__all__ = ["Face", "Scan"]
 
 _GL = np.polynomial.legendre.leggauss(24)
 #: Samples of the slope over the search window in which :meth:`Face.dips` looks for valleys.
 _DIP_SAMPLES = 8001
+#: Samples per decade of distance of the outward scan (a ratio of 10^(1/16) = 1.155).
+_PER_DECADE = 16
+#: The scan's distances from its centre are 10^(j/16) for j = _J_MIN .. _J_MAX, in the user's
+#: length unit: the grid maps onto itself when every length is multiplied by a power of 10,
+#: so that what the scan finds does not depend on the unit lengths are written in.
+_J_MIN, _J_MAX = -20 * _PER_DECADE, 20 * _PER_DECADE
+#: Decades the scan goes on past the outermost feature (a slope that does not rise outward,
+#: a break, an edge) ...
+_PAST_FEATURES = 6
+#: ... and past the distance at which the face has risen by that distance.
+_PAST_RISE = 1
+#: Gap samples a decade of distance outward from the zones (:meth:`Face.sample_points`).
+_GAP_PER_DECADE = 8
+#: Gap samples inside each gap between neighbouring zones (Chebyshev points).
+_GAP_INNER = 8
+
+
+@dataclass(frozen=True)
+class Scan:
+    """What the outward scan of a face found (:meth:`Face.scan`).
+
+    The slope is sampled on each side of the face that has no edge, outward from a centre
+    ``c0`` (the finite edge, the middle of the breaks, or X = 0) at distances 10^(j/16),
+    until it has been seen to rise outward for :data:`_PAST_FEATURES` decades past the
+    outermost feature and :data:`_PAST_RISE` decade past the distance at which the face has
+    risen by that distance.  A face that still falls, or is flat, toward a side without an
+    edge at the end of the scan (10^20 from the centre) is refused.
+
+    Attributes
+    ----------
+    c0 : float
+    X, slope : ndarray
+        The samples, ascending in X, and H' there.
+    features : tuple of float
+        X of each feature: the finite edges, the breaks, and the middle of each pair of
+        neighbouring samples across which H' changes sign (or is zero).
+    rise_run : float or None
+        The smallest distance from ``c0`` at which the face has risen above the lowest of
+        the samples before it by that distance (None where it never does: a face flatter
+        than 45 degrees all the way).
+    reach : (float, float)
+        How far the face is known to rise outward: the outermost samples (the edge on a
+        side that has one).
+    """
+    c0: float
+    X: np.ndarray
+    slope: np.ndarray
+    features: tuple
+    rise_run: float | None
+    reach: tuple
 
 
 def outside(zones, X):
@@ -63,6 +114,7 @@ class Face:
         self.homogeneous = None if homogeneous is None else (float(homogeneous[0]),
                                                              float(homogeneous[1]))
         self._dips = None
+        self._scan = None
 
     # -- heights ---------------------------------------------------------------------------
     def rise(self, x0, x1):
@@ -104,29 +156,109 @@ class Face:
             return self.height(X) - float(self.height(np.array([ref]))[0])
         pts, inv = np.unique(np.concatenate([[float(ref)], X.ravel()]), return_inverse=True)
         steps = self._rises(pts[:-1], pts[1:]) if pts.size > 1 else np.zeros(0)
-        H = np.concatenate([[0.0], np.cumsum(steps)])
-        return (H[inv[1:]] - H[inv[0]]).reshape(X.shape)
+        # summed outward from ref on each side: a point near ref does not carry the rounding
+        # of the (possibly far larger) rises beyond it
+        k = int(inv[0])
+        H = np.zeros(pts.size)
+        H[k + 1:] = np.cumsum(steps[k:])
+        H[:k] = -np.cumsum(steps[:k][::-1])[::-1]
+        return H[inv[1:]].reshape(X.shape)
 
-    # -- where the face is lowest --------------------------------------------------------
+    # -- the face's own scale -------------------------------------------------------------
+    def scan(self):
+        """The face explored outward on its sides without an edge (:class:`Scan`): where it
+        does anything, how far it rises, and that it does not fall or stay flat toward a side
+        without an edge.  Computed once per face.
+
+        Raises
+        ------
+        PunchGeometryError
+            The face falls (its slope does not rise outward), or is flat, toward a side
+            without an edge at the end of the scan; or its slope stops being finite before
+            the face has been seen to rise.
+        """
+        if self._scan is None:
+            self._scan = self._explore()
+        return self._scan
+
+    def _explore(self):
+        lo, hi = self.extent
+        finite = [x for x in (lo, hi) if math.isfinite(x)]
+        known = finite + list(self.breaks)
+        sides = [side for side, edge in ((-1, lo), (1, hi)) if not math.isfinite(edge)]
+        if not sides:
+            return Scan(0.5 * (lo + hi), np.zeros(0), np.zeros(0), tuple(sorted(set(known))),
+                        None, (lo, hi))
+        c0 = finite[0] if finite else (0.5 * (min(known) + max(known)) if known else 0.0)
+        j = _J_MIN
+        if c0 != 0.0:       # distances below a few ulps of c0 are not distances
+            j = max(j, math.ceil(_PER_DECADE * math.log10(8.0 * np.finfo(float).eps * abs(c0))))
+        r_known = max((abs(x - c0) for x in known), default=0.0)
+        state = {side: _SideScan(side) for side in sides}
+        with np.errstate(over="ignore", invalid="ignore"):
+            while j <= _J_MAX and not all(t.done for t in state.values()):
+                r = 10.0 ** (np.arange(j, j + _PER_DECADE) / _PER_DECADE)
+                r_feat = max([r_known] + [t.r_wrong for t in state.values()])
+                for t in state.values():
+                    if not t.done:
+                        t.extend(self.slope, c0, r, r_feat)
+                j += _PER_DECADE
+        _scan_verdict(state, c0, self.extent)
+        parts = [state[-1].samples(c0)] if -1 in state else []
+        parts += [state[1].samples(c0)] if 1 in state else []
+        X = np.concatenate([p[0] for p in parts])
+        dH = np.concatenate([p[1] for p in parts])
+        order = np.argsort(X, kind="stable")
+        X, dH = X[order], dH[order]
+        flips = np.flatnonzero((dH[:-1] * dH[1:] <= 0.0))
+        features = sorted(set(known) | set((0.5 * (X[flips] + X[flips + 1])).tolist()))
+        runs = [t.rise_run for t in state.values() if t.rise_run is not None]
+        reach = (lo if math.isfinite(lo) else float(X[0]), hi if math.isfinite(hi) else float(X[-1]))
+        return Scan(c0, X, dH, tuple(features), max(runs) if runs else None, reach)
+
     @property
     def scale(self):
+        """The face's own length: its width where it has two edges; else the span of its
+        features (:meth:`scan`), or where it has one feature, the distance at which it has
+        risen by that distance; 1 where none of these exists (a straight face from one edge,
+        which has no length of its own: the load sets the contact's).  A convex face (the
+        library's punches) is not scanned: its extent, the span of its breaks, or 1."""
         lo, hi = self.extent
         if math.isfinite(lo) and math.isfinite(hi):
             return hi - lo
-        if self.breaks:
-            return max(1.0, self.breaks[-1] - self.breaks[0])
-        return 1.0
+        if self.convex:
+            return max(1.0, self.breaks[-1] - self.breaks[0]) if self.breaks else 1.0
+        sc = self.scan()
+        span = sc.features[-1] - sc.features[0]
+        if span > 0.0:
+            return span
+        return sc.rise_run if sc.rise_run is not None else 1.0
 
     def search_window(self):
+        """Where the face's lowest points and valleys are looked for: its extent where it has
+        two edges, else its features (:meth:`scan`) and 8 times its :attr:`scale` beyond
+        them, within its extent."""
         lo, hi = self.extent
+        if math.isfinite(lo) and math.isfinite(hi):
+            return lo, hi
         s = self.scale
-        mid = 0.5 * (lo + hi) if math.isfinite(lo + hi) else (
-            lo + s if math.isfinite(lo) else (hi - s if math.isfinite(hi) else
-                                               (0.5 * (self.breaks[0] + self.breaks[-1])
-                                                if self.breaks else 0.0)))
-        a = lo if math.isfinite(lo) else mid - 8.0 * s
-        b = hi if math.isfinite(hi) else mid + 8.0 * s
-        return a, b
+        if self.convex:
+            mid = lo + s if math.isfinite(lo) else (hi - s if math.isfinite(hi) else (
+                0.5 * (self.breaks[0] + self.breaks[-1]) if self.breaks else 0.0))
+            return (lo if math.isfinite(lo) else mid - 8.0 * s,
+                    hi if math.isfinite(hi) else mid + 8.0 * s)
+        f = self.scan().features
+        return max(lo, f[0] - 8.0 * s), min(hi, f[-1] + 8.0 * s)
+
+    def _window_samples(self, m):
+        """m samples of the search window, and the scan's samples inside it (features finer
+        than the window's spacing near the scan's centre)."""
+        a, b = self.search_window()
+        X = np.linspace(a, b, m)
+        if not self.convex:
+            S = self.scan().X
+            X = np.union1d(X, S[(S > a) & (S < b)])
+        return X
 
     def lowest_points(self, m=2001):
         """[(X, kind)]: the global minima of H on the face, each an interior point
@@ -143,7 +275,8 @@ class Face:
         if known is not None:
             return known
         a, b = self.search_window()
-        X = np.linspace(a, b, m)
+        X = self._window_samples(m)
+        m = X.size
         dH = self.slope(X)
         top = max(float(np.max(np.abs(dH))), np.finfo(float).tiny)
         zero = np.abs(dH) <= 1e-14 * top
@@ -256,7 +389,7 @@ class Face:
         between them unseen.  Computed once per face."""
         if self._dips is None:
             a, b = self.search_window()
-            X = np.linspace(a, b, _DIP_SAMPLES)
+            X = self._window_samples(_DIP_SAMPLES)
             dH = self.slope(X)
             out = [x for x in self.breaks if a < x < b]
             out += [self._slope_zero(X[k], X[k + 1])
@@ -265,14 +398,131 @@ class Face:
         return self._dips
 
     def sample_points(self, zones, m):
-        """m points of the search window outside the zones."""
+        """The points outside the zones where the gap is checked, ascending: m samples of
+        the search window and the zones; :data:`_GAP_INNER` Chebyshev points inside each gap
+        between neighbouring zones (a gap that closes like a square root at a merge is soon
+        narrower than the samples' spacing) where fewer than that many samples fall in it;
+        and outward from the window, :data:`_GAP_PER_DECADE` a decade of distance from the
+        samples' spacing out to the edge, or on a side without one to the reach of the face's
+        :meth:`scan` (the last of them is where the gap is shown to stay open beyond:
+        :func:`contact.continuation._stays_open`)."""
         a, b = self.search_window()
-        a = min(a, zones[0].c)
-        b = max(b, zones[-1].d)
-        X = np.linspace(a, b, m)
+        c1, dJ = zones[0].c, zones[-1].d
+        a, b = min(a, c1), max(b, dJ)
+        parts = [np.linspace(a, b, m)]
+        # (where the evenly spaced samples suffice they are left alone: the gap's valleys are
+        # located by parabolas through them)
+        u = np.cos(np.pi * (np.arange(_GAP_INNER) + 0.5) / _GAP_INNER)
+        for z0, z1 in zip(zones[:-1], zones[1:]):
+            if z1.c - z0.d < _GAP_INNER * (b - a) / (m - 1):
+                parts.append(0.5 * (z0.d + z1.c) + 0.5 * (z1.c - z0.d) * u)
+        lo, hi = self.extent
+        reach = self.scan().reach if not self.convex else (a, b)
+        for side, end, far in ((-1.0, a, max(lo, reach[0])), (1.0, b, min(hi, reach[1]))):
+            dist = abs(far - end)
+            near = (b - a) / (m - 1)
+            if math.isfinite(dist) and dist > near:
+                k = math.ceil(_GAP_PER_DECADE * math.log10(dist / near))
+                d = np.minimum(near * 10.0 ** (np.arange(1, k + 1) / _GAP_PER_DECADE), dist)
+                parts.append(end + side * d)
+        X = np.unique(np.concatenate(parts))
         return X[outside(zones, X)]
 
     def rise_scale(self, state):
         X = np.concatenate([z.c + z.width * np.linspace(0.0, 1.0, 9) for z in state.zones])
         width = state.zones[-1].d - state.zones[0].c
         return max(float(np.max(np.abs(self.slope(X)))) * width, np.finfo(float).tiny)
+
+
+class _SideScan:
+    """The outward scan of one side of a face without an edge (:meth:`Face.scan`): the
+    slope at growing distances r from the centre, the largest r where it does not rise
+    outward, and the height along the side by the trapezoid rule (only to tell where the face
+    has risen by its own distance: a criterion to stop, not a value used)."""
+
+    def __init__(self, side):
+        self.side = side            # -1: toward -X, +1: toward +X
+        self.r, self.s = [], []
+        self.r_wrong = 0.0          # the largest r where side * H' <= 0
+        self.r_moving = 0.0         # the largest r where H' != 0
+        self.H = self.H_low = 0.0
+        self.last = None            # (r, side * H') of the last sample
+        self.rise_run = None
+        self.done = False
+        self.error = None
+
+    def extend(self, slope, c0, r, r_feat):
+        """One more decade of distances r (ascending); ``r_feat``: the outermost feature's
+        distance so far, over both sides."""
+        try:
+            s = np.asarray(slope(c0 + self.side * r), dtype=float)
+        except ProfileCallableError as exc:
+            # a slope that stops being finite (or raises) far out ends the scan where the
+            # face has been seen to rise; anywhere else it is the user's to know about
+            self.done = True
+            if not self.seen_rising(r_feat, self.r[-1][-1] if self.r else 0.0):
+                self.error = exc
+            return
+        self.r.append(r)
+        self.s.append(s)
+        up = self.side * s
+        wrong = ~(up > 0.0)
+        if wrong.any():
+            self.r_wrong = max(self.r_wrong, float(r[wrong][-1]))
+        if (s != 0.0).any():
+            self.r_moving = max(self.r_moving, float(r[s != 0.0][-1]))
+        rr = np.concatenate([[self.last[0]], r]) if self.last else r
+        uu = np.concatenate([[self.last[1]], up]) if self.last else up
+        steps = np.cumsum(0.5 * np.diff(rr) * (uu[1:] + uu[:-1]))
+        H = self.H + (steps if self.last else np.concatenate([[0.0], steps]))
+        low = np.minimum.accumulate(np.minimum(H, self.H_low))
+        if self.rise_run is None:
+            k = np.flatnonzero(H - low >= r)
+            if k.size:
+                self.rise_run = float(r[k[0]])
+        self.H, self.H_low = float(H[-1]), float(low[-1])
+        self.last = (float(r[-1]), float(up[-1]))
+        self.done = self.seen_rising(max(r_feat, self.r_wrong), float(r[-1]))
+
+    def seen_rising(self, r_feat, r_end):
+        """Whether the face has been seen to rise outward far enough (:class:`Scan`)."""
+        return (self.rise_run is not None and r_end >= 10.0 ** _PAST_RISE * self.rise_run
+                and r_end >= 10.0 ** _PAST_FEATURES * max(r_feat, self.r_wrong))
+
+    def falling(self):
+        """Whether the outermost decade sampled does not rise outward."""
+        return bool(self.r) and self.r_wrong >= self.r[-1][0]
+
+    def samples(self, c0):
+        if not self.r:
+            return np.zeros(0), np.zeros(0)
+        return c0 + self.side * np.concatenate(self.r), np.concatenate(self.s)
+
+
+def _scan_verdict(state, c0, extent):
+    """PunchGeometryError for a side that the scan leaves falling or flat, or whose slope
+    failed before the face was seen to rise."""
+    lo, hi = extent
+    flat = {side: t.falling() and t.r_moving < t.r[-1][0] for side, t in state.items()}
+    if len(state) == 2 and all(flat.values()) and all(t.r_moving == 0.0 for t in state.values()):
+        raise PunchGeometryError(
+            "the face is flat everywhere, with no edge: give the face's extent (face=) so "
+            "that contact has an edge there")
+    for side, t in state.items():
+        name = "-X" if side < 0 else "+X"
+        if t.error is not None and not t.falling():
+            raise t.error
+        if not t.falling():
+            continue
+        if flat[side]:
+            start = c0 + side * t.r_moving
+            raise PunchGeometryError(
+                f"the face is flat toward {name} from X = {start:.6g}, a side without an "
+                "edge: give the face's extent (face=) so that contact has an edge there")
+        where = c0 + side * t.r_wrong
+        far = c0 + side * t.r[-1][-1]
+        raise PunchGeometryError(
+            f"the face falls toward {name}: its height does not rise outward at X = "
+            f"{where:.6g} (sampled out to X = {far:.6g}), so contact cannot be shown to stay "
+            f"away from it there; give the face's extent (face=) where it ends"
+            + (f" ({t.error})" if t.error is not None else ""))
