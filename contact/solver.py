@@ -451,7 +451,7 @@ def _lockstep_results(material, punch, cases, steps, residual):
     """The ContactResult of each case the lockstep step finished."""
     sols, kinds = steps.solutions, steps.kinds
     loads = sols.integral()
-    phi_ends = sols.phi_local(np.array([-1.0, 1.0])) if CORNER in kinds else None
+    phi_ends = sols.endpoint_values() if CORNER in kinds else None
     done = [cases[i] for i in steps.done.tolist()]
     res = _residuals(sols, punch, done) if residual else [None] * len(sols)
     out = []

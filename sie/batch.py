@@ -17,7 +17,7 @@ References: as for :func:`sie.solve` (Erdogan, Gupta & Cook 1973; Krenk 1975).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -31,7 +31,7 @@ from .gaussjacobi import N_BOUNDARY, _small_rule
 from .intervals import Interval
 from .jacobi import _jacobi_norms, _vandermonde
 from .quadrature import _NEAR_MINUS_ONE, WeightedRule
-from .solution import IntervalSolution, Solution
+from .solution import IntervalSolution, Solution, equation_end_value
 from .special import jacobi_moment_shifted
 
 __all__ = ["DominantBatch", "solve_batch", "functionals_batch", "SolutionBatch",
@@ -308,7 +308,7 @@ class DominantBatch:
                 C[i] = _chop_noise(C[i], e)
         C.setflags(write=False)
         return SolutionBatch(iv, self.a, self.b, self.alpha, self.beta, k, n, C, cons,
-                             self.exponents, self.mu0)
+                             self.exponents, self.mu0, f)
 
 
 # --------------------------------------------------------------------------
@@ -423,6 +423,9 @@ class SolutionBatch:
     exponents : tuple of Exponents
     mu0 : ndarray, shape (B,)
         int (1-u)^alpha_i (1+u)^beta_i du over [-1, 1] (exact).
+    f : callable or None
+        The right-hand side solved for (what :meth:`endpoint_values` evaluates at the
+        singular ends); None for a batch built by :meth:`of`.
 
     References
     ----------
@@ -449,6 +452,7 @@ class SolutionBatch:
     consistency: np.ndarray | None
     exponents: tuple
     mu0: np.ndarray
+    f: object = field(default=None, repr=False)
 
     def __len__(self):
         return self.a.size
@@ -458,8 +462,21 @@ class SolutionBatch:
         c = self.coefficients[i]                    # a read-only view of the batch's array
         cons = None if self.consistency is None else float(self.consistency[i])
         c0, d0 = self.intervals[i].tolist()
-        piece = IntervalSolution(Interval(c0, d0), self.exponents[i], self.n, c, cons)
+        piece = IntervalSolution(Interval(c0, d0), self.exponents[i], self.n, c, cons, None,
+                                 self._end_rhs(np.array([c0, d0])))
         return Solution((piece,), float(self.a[i]), float(self.b[i]), True, None)
+
+    def _end_rhs(self, x):
+        """(f, abs(f)) at the points ``x`` on call (None without f): the right-hand side at
+        the ends, as :attr:`sie.IntervalSolution.end_rhs`."""
+        f = self.f
+        if f is None:
+            return None
+
+        def end_rhs():
+            g = call_checked(f, "f", (x,), x.shape)
+            return g, np.abs(g)
+        return end_rhs
 
     @classmethod
     def of(cls, solutions) -> "SolutionBatch":
@@ -491,7 +508,8 @@ class SolutionBatch:
         return SolutionBatch(self.intervals[idx], self.a[idx], self.b[idx], self.alpha[idx],
                              self.beta[idx], self.kappa, self.n, C,
                              None if self.consistency is None else self.consistency[idx],
-                             tuple(self.exponents[i] for i in idx.tolist()), self.mu0[idx])
+                             tuple(self.exponents[i] for i in idx.tolist()), self.mu0[idx],
+                             self.f)
 
     def integral(self) -> np.ndarray:
         """int psi_i over its interval, shape (B,): h_i mu_0 c_0."""
@@ -503,6 +521,32 @@ class SolutionBatch:
         u = np.ascontiguousarray(u, dtype=float).ravel()
         out = np.empty((len(self), u.size))
         _series(self.coefficients, self.alpha, self.beta, u, out)
+        return out
+
+    def endpoint_values(self) -> np.ndarray:
+        """phi_i at the local ends (-1, +1), shape (B, 2), as ``batch[i].endpoint_value``.
+
+        For index 0, at the singular end from the equation there where that keeps more
+        digits than the series (:func:`sie.solution.equation_end_value`: as the end's
+        exponent tends to 0; f is called once more, at the B singular ends); elsewhere, and
+        without ``f``, the series (:meth:`phi_local`)."""
+        out = self.phi_local(np.array([-1.0, 1.0]))
+        if self.kappa != 0 or self.f is None:
+            return out
+        left = self.beta < 0                      # the singular end of each equation
+        x = np.where(left, self.intervals[:, 0], self.intervals[:, 1])
+        g = call_checked(self.f, "f", (x,), x.shape)
+        lam = -self.b / np.array([e.sin for e in self.exponents])      # dominant_lambda
+        for end, sel in ((-1, left), (1, ~left)):
+            if not np.any(sel):
+                continue
+            exps = [e for e, m in zip(self.exponents, sel) if m]
+            eps = [e.beta if end < 0 else e.alpha for e in exps]
+            eps_p1 = [e.beta_p1 if end < 0 else e.alpha_p1 for e in exps]
+            value, better = equation_end_value(self.coefficients[sel], eps, eps_p1, end,
+                                               g[sel], np.abs(g[sel]), lam[sel])
+            rows = np.flatnonzero(sel)[better]
+            out[rows, (end + 1) // 2] = value[better]
         return out
 
     def weight_local(self, u) -> np.ndarray:

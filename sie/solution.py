@@ -16,9 +16,95 @@ from .errors import EvaluationPointError
 from .exponents import Exponents
 from .intervals import Interval
 from .jacobi import jacobi_series
-from .special import jacobi_moment_shifted
+from .special import jacobi_end_values, jacobi_moment_shifted
+from .unknowns import dominant_lambda
 
-__all__ = ["Solution", "IntervalSolution"]
+__all__ = ["Solution", "IntervalSolution", "end_value_gaps", "equation_end_value"]
+
+
+def end_value_gaps(n, eps, end):
+    """P_k^{(alpha,beta)}(end) - P_k^{(-alpha,-beta)}(end), k < n, without cancellation.
+
+    ``eps`` is the exponent at that end (alpha at +1, beta at -1).  With
+    A_k = (1+eps)_k/k!, B_k = (1-eps)_k/k! (DLMF 18.6.1) the gap is end^k D_k,
+    D_k = A_k - B_k = D_{k-1} + eps (A_{k-1} + B_{k-1}) / k, a sum of terms of one sign:
+    it keeps full relative precision as eps -> 0, where A_k - B_k formed as it reads keeps
+    only ~1e-16 / eps of itself.
+
+    Parameters
+    ----------
+    n : int
+        Number of degrees, k = 0..n-1.
+    eps : float or ndarray
+        The exponent(s) of the end, in (-1, 1).
+    end : {1, -1}
+
+    Returns
+    -------
+    ndarray, shape ``np.shape(eps) + (n,)``
+
+    Examples
+    --------
+    >>> import sie.solution as so
+    >>> [float(v) / 1e-20 for v in so.end_value_gaps(3, 1e-20, -1)]   # 0, -2 eps, 3 eps
+    [0.0, -2.0, 3.0]
+    """
+    eps = np.asarray(eps, dtype=float)[..., None]
+    k = np.arange(1, n, dtype=float)
+    two = np.full(eps.shape, 2.0)                            # A_0 + B_0
+    sums = np.concatenate([two, np.cumprod((k + eps) / k, axis=-1)[..., :-1]
+                           + np.cumprod((k - eps) / k, axis=-1)[..., :-1]], axis=-1)
+    D = np.concatenate([np.zeros(eps.shape), np.cumsum(eps * sums / k, axis=-1)], axis=-1)
+    if end < 0:
+        D[..., 1::2] *= -1.0
+    return D
+
+
+def equation_end_value(coefficients, eps, eps_p1, end, g, g_size, lam):
+    """phi at the singular end ``end`` of index-0 intervals from the equation there, and
+    where that form is the more accurate one.
+
+    The dominant operator maps the basis exactly, lambda sum_k c_k P_k^{(-alpha,-beta)} = g
+    at the collocation nodes (g = f - (coupling + kernel) psi), so that to the truncation
+    of g
+        phi(end) = g(end) / lambda + sum_k c_k [P_k^{(alpha,beta)} - P_k^{(-alpha,-beta)}](end).
+    As the end's exponent eps -> 0 the gaps are O(eps) (:func:`end_value_gaps`): where g(end)
+    is small (zero: the parabolic punch's corner) phi(end) is O(eps c), which the series
+    sum_k c_k P_k^{(alpha,beta)}(end), of terms of size c, keeps only to ~1e-16 / eps.  Each
+    form rounds to ~1e-16 times the sum of the sizes of its terms; the equation's form is
+    the more accurate where its sum, g_size / abs(lambda) + sum abs(c_k gap_k), is the
+    smaller.  (It is not next to a close interval's singular end, whose Cauchy integral
+    makes g(end) the difference of large terms.)
+
+    Parameters
+    ----------
+    coefficients : ndarray, shape (B, n)
+        c_k of phi, one row per interval (of one index and n).
+    eps, eps_p1 : ndarray, shape (B,)
+        The exponent of each at that end (alpha at +1, beta at -1), and 1 + it (exact).
+    end : {1, -1}
+        The singular end.
+    g, g_size : ndarray, shape (B,)
+        g(end), and the sum of the sizes of the terms it was formed from (abs(f(end)) plus
+        those of the coupling and kernel terms).
+    lam : ndarray, shape (B,)
+        lambda = -b / sin(pi alpha) (:func:`sie.unknowns.dominant_lambda` at index 0).
+
+    Returns
+    -------
+    value : ndarray, shape (B,)
+        phi(end) from the equation.
+    better : ndarray of bool, shape (B,)
+        Where it is the more accurate form (elsewhere sum the series).
+    """
+    C = np.asarray(coefficients, dtype=float)
+    n = C.shape[-1]
+    gaps = end_value_gaps(n, np.asarray(eps, dtype=float), end)
+    basis = np.array([jacobi_end_values(n, v, end) for v in np.asarray(eps_p1).tolist()])
+    value = g / lam + np.sum(C * gaps, axis=-1)
+    better = (np.abs(g_size / lam) + np.sum(np.abs(C * gaps), axis=-1)
+              < np.sum(np.abs(C * basis), axis=-1))
+    return value, better
 
 
 @dataclass(frozen=True, eq=False)
@@ -48,6 +134,11 @@ class IntervalSolution:
     remainder : object or None
         With ``breaks``: the pointwise correction of phi (:mod:`sie.remainder`), built on
         first use; None without breaks.
+    end_rhs : (ndarray, ndarray) or None
+        (g, size) at the interval's ends (c, d): the right-hand side of the dominant
+        equation, g = f - (coupling + kernel) psi, and the sum of the sizes of its terms;
+        evaluated on first use (:meth:`endpoint_value` needs it); None where the solver gave
+        no way to evaluate it.
 
     References
     ----------
@@ -70,6 +161,7 @@ class IntervalSolution:
     coefficients: np.ndarray
     consistency: float | None
     _remainder_factory: object = field(default=None, repr=False)
+    _end_rhs_factory: object = field(default=None, repr=False)
 
     @property
     def alpha(self) -> float:
@@ -92,6 +184,33 @@ class IntervalSolution:
     def remainder(self):
         """The breaks correction, built on first use (None without breaks)."""
         return self._remainder_factory() if self._remainder_factory is not None else None
+
+    @functools.cached_property
+    def end_rhs(self):
+        """(g, size) at the ends (c, d): g = f - (coupling + kernel) psi, and the sum of the
+        sizes of the terms it is formed from; on first use, None without a way to evaluate
+        it."""
+        f = self._end_rhs_factory
+        return None if f is None else tuple(np.asarray(v, dtype=float) for v in f())
+
+    def endpoint_value(self, end, b):
+        """phi(end) at the local end +1 or -1; ``b`` the equation's Cauchy coefficient.
+
+        At a singular end of an index-0 interval without breaks, from the equation at the
+        end where that keeps more digits than the series (:func:`equation_end_value`: as
+        the end's exponent tends to 0); elsewhere the series, with the breaks'
+        correction."""
+        if self.kappa == 0 and (self.alpha if end == 1 else self.beta) < 0 \
+                and self.remainder is None and self.end_rhs is not None:
+            e, i = self.exp, (end + 1) // 2
+            g, size = self.end_rhs
+            value, better = equation_end_value(
+                self.coefficients[None, :], [e.alpha if end == 1 else e.beta],
+                [e.alpha_p1 if end == 1 else e.beta_p1], end, g[i:i + 1], size[i:i + 1],
+                np.array([dominant_lambda(e, b)]))
+            if better[0]:
+                return float(value[0])
+        return float(self.phi_local(np.array([float(end)]))[0])
 
     def phi_local(self, u):
         out = jacobi_series(self.coefficients, self.alpha, self.beta, u)
@@ -335,11 +454,15 @@ class Solution:
 
     def endpoint_value(self, end, interval=None):
         """phi_j(+1) or phi_j(-1) (local ends): the factor stress-intensity factors are
-        built from.  ``interval`` may be omitted for one interval."""
+        built from.  ``interval`` may be omitted for one interval.
+
+        At a singular end of an index-0 interval it is formed from the equation at that end
+        where that keeps more digits (:func:`equation_end_value`): it keeps its relative
+        precision as the end's exponent tends to 0, where the Jacobi series summed at the
+        end keeps ~1e-16 / exponent of it; elsewhere it is the series, as :meth:`phi`."""
         if end not in (1, -1):
             raise EvaluationPointError(f"end must be +1 or -1, got {end!r}")
-        p = self._piece(interval)
-        return float(p.phi_local(np.array([float(end)]))[0])
+        return self._piece(interval).endpoint_value(int(end), self.b)
 
     @property
     def condition(self):

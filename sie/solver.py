@@ -268,11 +268,14 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     # 3. assembly and solve
     sys_ = assemble_and_solve(unknowns, fhat, b, kernel, extra)
     # 4. result
-    pieces = []
-    for u, c, cons in zip(unknowns, sys_.coefficients, sys_.consistency):
+    coeffs = []
+    for u, c in zip(unknowns, sys_.coefficients):
         c = _chop_noise(c, u.exp)
         c.flags.writeable = False
-        pieces.append(IntervalSolution(u.interval, u.exp, u.n, c, cons))
+        coeffs.append(c)
+    pieces = [IntervalSolution(u.interval, u.exp, u.n, c, cons, None,
+                               _end_rhs_factory(u, unknowns, coeffs, f, b, kernel))
+              for u, c, cons in zip(unknowns, coeffs, sys_.consistency)]
     needs_scale = checked or any(p.consistency is not None for p in pieces)
     fscale = max(float(np.abs(v).max(initial=0.0)) for v in fvals) if needs_scale else 0.0
     for j, p in enumerate(pieces):
@@ -299,8 +302,27 @@ def _with_remainders(pieces, unknowns, fvals, sys_, f, a, b, kernel):
             continue
         out.append(IntervalSolution(p.interval, p.exp, p.n, p.coefficients, p.consistency,
                                     _remainder_factory(p, u, fs, g, pieces, unknowns, f, a, b,
-                                                       kernel)))
+                                                       kernel), p._end_rhs_factory))
     return out
+
+
+def _end_rhs_factory(u, unknowns, coeffs, f, b, kernel):
+    """(g, size) at the ends c, d of ``u``'s interval, on call: g = f - (coupling + kernel)
+    psi and the sum of the sizes of its terms (what :meth:`IntervalSolution.endpoint_value`
+    forms phi at a singular end from, and judges that form by); f at the ends themselves,
+    not at m -+ h, which may round off them."""
+    iv = u.interval
+
+    def end_rhs():
+        x = np.array([iv.c, iv.d])
+        g = call_checked(f, "f", (x,), x.shape)
+        size = np.abs(g)
+        if len(unknowns) > 1 or kernel is not None:
+            imgs = operator_images(x, u, unknowns, b, kernel)
+            g = g - sum(img @ c for img, c in zip(imgs, coeffs))
+            size = size + sum(np.abs(img) @ np.abs(c) for img, c in zip(imgs, coeffs))
+        return g, size
+    return end_rhs
 
 
 def _remainder_factory(piece, u, fs, g_hat, pieces, unknowns, f, a, b, kernel):
