@@ -103,7 +103,7 @@ class Face:
     """
 
     def __init__(self, slope, extent=(-math.inf, math.inf), breaks=(), height=None,
-                 convex=False, homogeneous=None):
+                 convex=False, homogeneous=None, slope_from_height=False):
         self.slope = slope
         self.extent = (float(extent[0]), float(extent[1]))
         self.breaks = tuple(sorted(float(b) for b in breaks))
@@ -115,6 +115,9 @@ class Face:
                                                              float(homogeneous[1]))
         self._dips = None
         self._scan = None
+        # the slope is a finite difference of the height, whose step follows the scale: the
+        # scan reads the height itself
+        self.slope_from_height = bool(slope_from_height) and height is not None
 
     # -- heights ---------------------------------------------------------------------------
     def rise(self, x0, x1):
@@ -195,6 +198,10 @@ class Face:
             j = max(j, math.ceil(_PER_DECADE * math.log10(8.0 * np.finfo(float).eps * abs(c0))))
         r_known = max((abs(x - c0) for x in known), default=0.0)
         state = {side: _SideScan(side) for side in sides}
+        if self.slope_from_height:
+            H0 = float(self.height(np.array([c0]))[0])
+            for t in state.values():
+                t.height, t.H_prev = self.height, H0
         with np.errstate(over="ignore", invalid="ignore"):
             while j <= _J_MAX and not all(t.done for t in state.values()):
                 r = 10.0 ** (np.arange(j, j + _PER_DECADE) / _PER_DECADE)
@@ -210,6 +217,7 @@ class Face:
         dH = np.concatenate([p[1] for p in parts])
         order = np.argsort(X, kind="stable")
         X, dH = X[order], dH[order]
+        X, dH = X[np.isfinite(dH)], dH[np.isfinite(dH)]
         flips = np.flatnonzero((dH[:-1] * dH[1:] <= 0.0))
         features = sorted(set(known) | set((0.5 * (X[flips] + X[flips + 1])).tolist()))
         runs = [t.rise_run for t in state.values() if t.rise_run is not None]
@@ -374,10 +382,20 @@ class Face:
         return [(x, "interior")]
 
     def _slope_zero(self, a, b):
-        """The zero of the slope between a and b, where it changes sign (Brent's method)."""
+        """The zero of the slope between a and b, where it changes sign (Brent's method);
+        where the two ends' slopes do not differ in sign (a change that was rounding noise
+        of a slope from the height), the end with the smaller slope."""
         from scipy.optimize import brentq   # here: ~0.15 s of every start otherwise
-        return brentq(lambda x: float(self.slope(np.array([x]))[0]), a, b,
-                      xtol=1e-15 * max(1.0, abs(a)), rtol=4 * np.finfo(float).eps)
+
+        def f(x):
+            return float(self.slope(np.array([x]))[0])
+        fa, fb = f(a), f(b)
+        if fa * fb > 0.0:
+            return a if abs(fa) <= abs(fb) else b
+        eps = np.finfo(float).eps
+        return brentq(f, a, b,
+                      xtol=max(4 * eps * max(abs(a), abs(b)), np.finfo(float).tiny),
+                      rtol=4 * eps)
 
     # -- the gap -----------------------------------------------------------------------------
     def dips(self):
@@ -450,12 +468,29 @@ class _SideScan:
         self.rise_run = None
         self.done = False
         self.error = None
+        self.height = None          # read the face through its height (Face.slope_from_height)
+        self.H_prev = None          # ... its height at the last sample
+
+    def _secants(self, c0, r):
+        """(H(X_k) - H(X_k-1)) / (X_k - X_k-1) at X_k = c0 + side r_k (the first from c0):
+        the slope as the height's samples give it."""
+        H = np.asarray(self.height(c0 + self.side * r), dtype=float)
+        r_prev = self.r[-1][-1] if self.r else 0.0
+        Hs = np.concatenate([[self.H_prev], H])
+        dH = np.diff(Hs)
+        dX = self.side * np.diff(np.concatenate([[r_prev], r]))
+        self.H_prev = float(H[-1])
+        # a difference at the rounding of the heights says nothing of the slope: NaN, which
+        # is neither rising nor a feature
+        noise = np.abs(dH) <= 8 * np.finfo(float).eps * np.maximum(np.abs(Hs[1:]), np.abs(Hs[:-1]))
+        return np.where(noise, np.nan, dH / dX)
 
     def extend(self, slope, c0, r, r_feat):
         """One more decade of distances r (ascending); ``r_feat``: the outermost feature's
         distance so far, over both sides."""
         try:
-            s = np.asarray(slope(c0 + self.side * r), dtype=float)
+            s = self._secants(c0, r) if self.height is not None else \
+                np.asarray(slope(c0 + self.side * r), dtype=float)
         except ProfileCallableError as exc:
             # a slope that stops being finite (or raises) far out ends the scan where the
             # face has been seen to rise; anywhere else it is the user's to know about
@@ -466,13 +501,13 @@ class _SideScan:
         self.r.append(r)
         self.s.append(s)
         up = self.side * s
-        wrong = ~(up > 0.0)
+        wrong = up <= 0.0               # (NaN: a height difference at rounding, see _secants)
         if wrong.any():
             self.r_wrong = max(self.r_wrong, float(r[wrong][-1]))
         if (s != 0.0).any():
             self.r_moving = max(self.r_moving, float(r[s != 0.0][-1]))
         rr = np.concatenate([[self.last[0]], r]) if self.last else r
-        uu = np.concatenate([[self.last[1]], up]) if self.last else up
+        uu = np.concatenate([[self.last[1]], np.nan_to_num(up)]) if self.last else np.nan_to_num(up)
         steps = np.cumsum(0.5 * np.diff(rr) * (uu[1:] + uu[:-1]))
         H = self.H + (steps if self.last else np.concatenate([[0.0], steps]))
         low = np.minimum.accumulate(np.minimum(H, self.H_low))
@@ -504,14 +539,15 @@ def _scan_verdict(state, c0, extent):
     failed before the face was seen to rise."""
     lo, hi = extent
     flat = {side: t.falling() and t.r_moving < t.r[-1][0] for side, t in state.items()}
+    for side, t in state.items():
+        if t.error is not None and (flat[side] or not t.falling()):
+            raise t.error               # the slope failed where the face does not fall
     if len(state) == 2 and all(flat.values()) and all(t.r_moving == 0.0 for t in state.values()):
         raise PunchGeometryError(
             "the face is flat everywhere, with no edge: give the face's extent (face=) so "
             "that contact has an edge there")
     for side, t in state.items():
         name = "-X" if side < 0 else "+X"
-        if t.error is not None and not t.falling():
-            raise t.error
         if not t.falling():
             continue
         if flat[side]:

@@ -29,8 +29,8 @@ from scipy.integrate import quad
 
 import contact
 import sie
-from validation.profiles import (ROUNDED_FLAT_BREAKS, asymmetric_slope, hyperbolic_tip_slope,
-                                 rounded_flat_slope, w_slope)
+from validation.profiles import (ASYMMETRIC_FACE, ROUNDED_FLAT_BREAKS, asymmetric_slope,
+                                 hyperbolic_tip_slope, rounded_flat_slope, w_slope)
 from validation.sampling import S40, interior, outside
 
 MAT = contact.zhou2014()
@@ -182,8 +182,10 @@ def test_numeric_solutions_are_physical(punch_name):
 CUSTOM = {
     # name: (punch factory, load, speed, friction)
     "W": (lambda: contact.ProfilePunch(w_slope), 0.2, 0.3, 0.3),
-    "asym": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.0),
-    "asym_mu": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.3),
+    "asym": (lambda: contact.ProfilePunch(asymmetric_slope, face=ASYMMETRIC_FACE), 0.01, 0.3,
+             0.0),
+    "asym_mu": (lambda: contact.ProfilePunch(asymmetric_slope, face=ASYMMETRIC_FACE), 0.01, 0.3,
+                0.3),
     "rounded": (lambda: contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS), 0.05, 0.3, 0.3),
     "rounded_nobreaks": (lambda: contact.ProfilePunch(rounded_flat_slope), 0.05, 0.3, 0.3),
 }

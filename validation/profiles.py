@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["w_slope", "asymmetric_slope", "rounded_flat_slope", "ROUNDED_FLAT_BREAKS",
+__all__ = ["w_slope", "asymmetric_slope", "ASYMMETRIC_FACE", "rounded_flat_slope", "ROUNDED_FLAT_BREAKS",
            "HYP_D", "hyperbolic_tip_slope", "exp_wedge_slope"]
 
 
@@ -17,8 +17,14 @@ def w_slope(X):
 
 
 def asymmetric_slope(X):
-    """Asymmetric face: dv/dX = X/100 + X^2/3000."""
+    """Asymmetric face: dv/dX = X/100 + X^2/3000 (on ASYMMETRIC_FACE)."""
     return X / 100.0 + X ** 2 / 3000.0
+
+
+#: The extent of the asymmetric face: v = X^2/200 + X^3/9000 has a local maximum at X = -30
+#: and falls without bound beyond it (back to the height of its tip at X = -45), so the face
+#: must end before that; contact.solve refuses it without an extent.
+ASYMMETRIC_FACE = (-20.0, 20.0)
 
 
 ROUNDED_FLAT_BREAKS = (-1.0, 1.0)

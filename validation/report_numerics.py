@@ -13,8 +13,8 @@ import numpy as np
 import contact
 import sie
 
-from .profiles import (HYP_D, ROUNDED_FLAT_BREAKS, asymmetric_slope, exp_wedge_slope,
-                       hyperbolic_tip_slope, rounded_flat_slope, w_slope)
+from .profiles import (ASYMMETRIC_FACE, HYP_D, ROUNDED_FLAT_BREAKS, asymmetric_slope,
+                       exp_wedge_slope, hyperbolic_tip_slope, rounded_flat_slope, w_slope)
 from .report_doc import fmt_err, fmt_num, fmt_t
 from .sampling import S40, interior, outside
 
@@ -132,7 +132,7 @@ CUSTOM = {
     # name: (punch factory, load, speed, friction, reference key, description)
     "W": (lambda: contact.ProfilePunch(w_slope), 0.2, 0.3, 0.3, "W",
           "W profile, slope 0.01 (X^3 - X), load 0.2 (two pressure peaks)"),
-    "asymmetric": (lambda: contact.ProfilePunch(asymmetric_slope), 0.01, 0.3, 0.3, "asymmetric",
+    "asymmetric": (lambda: contact.ProfilePunch(asymmetric_slope, face=ASYMMETRIC_FACE), 0.01, 0.3, 0.3, "asymmetric",
                    "asymmetric, slope X/100 + X^2/3000, load 0.01"),
     "rounded flat, breaks": (lambda: contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS), 0.05, 0.3,
                              0.3, "rounded flat, breaks",
