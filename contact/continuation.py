@@ -74,7 +74,7 @@ _PAST = (1e-6, 1e-4, 1e-2)   # relative distances past an event where the new zo
 _HISTORY = 4          # states (this one and earlier ones) the predictor extrapolates from
 _NEAR_VALLEY = 1e-2    # a valley of the gap below this (relative) is located more closely
 _BUDGET = 16           # residual evaluations a continuation step may spend, plus 2 per unknown
-_GAP_N = 4.0           # n >= _GAP_N sqrt(w / g) next to a gap g between zones of width w
+_GAP_N = 2.0           # n >= _GAP_N sqrt(w / g) next to a gap g between zones of width w
 
 
 @dataclass(frozen=True)
