@@ -9,10 +9,10 @@ path goes through :func:`sie.solve`; the paper's closed forms (corrected) are av
 """
 from .constants import SurfaceConstants, limiting_speed, rayleigh_speed, surface_constants
 from .continuation import Event
-from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError,
-                     LoadError, MaterialError, NearRayleighWarning, ProfileCallableError,
-                     PunchGeometryError, SpeedError, StressPointError,
-                     UnboundedStressError)
+from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
+                     DirectionError, FrictionError, LoadError, MaterialError,
+                     NearRayleighWarning, ProfileCallableError, PunchGeometryError, SpeedError,
+                     StressPointError, UnboundedStressError)
 from .material import Isotropic, Orthotropic, zhou2014
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
@@ -29,6 +29,6 @@ __all__ = [
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
     "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",
-    "StressPointError", "UnboundedStressError",
+    "StressPointError", "UnboundedStressError", "CauchyTransformError",
     "NearRayleighWarning",
 ]

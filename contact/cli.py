@@ -12,12 +12,18 @@ argument, or an --out that cannot be written, found before anything is solved) o
 that failed while it was solved, or a worker process that died) -- never a traceback.
 Stopped by Ctrl-C or SIGTERM, ``contact run`` removes its partial outputs and exits with 130
 or 143 (128 + the signal).
+
+A standard output closed by its reader (``contact table1 | head -3``) ends the command
+quietly, as it ends the standard Unix tools, which SIGPIPE kills: no message, and the
+status 141 (128 + SIGPIPE) those report, so that a pipeline under ``set -o pipefail`` sees
+the output cut short; ``contact run`` still finishes writing its files into --out.
 """
 from __future__ import annotations
 
 import argparse
 import contextlib
 import gc
+import io
 import multiprocessing
 import os
 import signal
@@ -40,6 +46,9 @@ EXIT_CASE_FAILED = 1
 #: The shell's status of a command stopped by SIGINT (Ctrl-C) or SIGTERM: 128 + the signal.
 EXIT_INTERRUPTED = 128 + signal.SIGINT
 EXIT_TERMINATED = 128 + signal.SIGTERM
+#: The status of a command whose standard output was closed by its reader, as a shell
+#: reports a Unix tool killed by SIGPIPE: 128 + 13 (the number, where Windows has no SIGPIPE).
+EXIT_BROKEN_PIPE = 128 + getattr(signal, "SIGPIPE", 13)
 
 
 class UsageError(Exception):
@@ -131,7 +140,15 @@ def main(argv=None) -> int:
     exit status."""
     args = build_parser().parse_args(argv)
     try:
-        return args.handler(args)
+        status = args.handler(args)
+        sys.stdout.flush()                     # a reader gone shows here at the latest
+        return status
+    except BrokenPipeError as exc:
+        if _stdout_gone():
+            _silence_stdout()
+            return EXIT_BROKEN_PIPE
+        _error(str(exc))                       # a pipe other than stdout: as any OSError
+        return EXIT_CASE_FAILED
     except (scenes.SceneError, UsageError) as exc:
         _error(str(exc))
         return EXIT_BAD_INPUT
@@ -179,7 +196,47 @@ def console():
 
 
 def _error(message: str):
-    print(f"contact: error: {message}", file=sys.stderr)
+    with contextlib.suppress(OSError):         # a closed stderr: nowhere left to say it
+        print(f"contact: error: {message}", file=sys.stderr)
+
+
+def _stdout_gone() -> bool:
+    """Whether the standard output is a pipe (or socket) whose reader has gone: poll(2)
+    reports POLLERR (POLLHUP on some systems) on its file descriptor.  False where stdout
+    has no descriptor (replaced in-process) or the platform has no poll."""
+    import select
+    try:
+        fd = sys.stdout.fileno()
+        poller = select.poll()
+        poller.register(fd, select.POLLOUT)
+        events = poller.poll(0)
+    except (AttributeError, ValueError, OSError, io.UnsupportedOperation):
+        return False
+    return any(ev & (select.POLLERR | select.POLLHUP) for _, ev in events)
+
+
+def _silence_stdout() -> None:
+    """Point the standard output's descriptor at the null device (the Python documentation's
+    recipe for SIGPIPE): what is still buffered, and anything printed after, goes there
+    instead of raising BrokenPipeError again when the interpreter flushes it at exit."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, sys.stdout.fileno())
+    finally:
+        os.close(devnull)
+
+
+def _print_out(text: str) -> bool:
+    """Print ``text`` to the standard output now; False (and stdout silenced) when its reader
+    has gone, so that a command can finish its other work (``contact run`` its files)."""
+    try:
+        print(text, flush=True)
+    except BrokenPipeError:
+        if not _stdout_gone():
+            raise
+        _silence_stdout()
+        return False
+    return True
 
 
 # --------------------------------------------------------------------------
@@ -198,6 +255,8 @@ def cmd_run(args) -> int:
         writer = scenes.SceneWriter(scene, args.out, scene.case_count,
                                     figures=None if args.figures else False, table=progress)
     with writer:
+        for note in writer.staging_notes:      # a dead run's staging folder, removed
+            print(f"contact: warning: {note}", file=sys.stderr, flush=True)
         with _executor(args.jobs, args.scheduler, scene.case_count) as executor, \
                 cyclic_gc_paused():
             run = scenes.iter_scene(scene, executor=executor, progress=progress,
@@ -205,8 +264,8 @@ def cmd_run(args) -> int:
             for results in run.chunks():
                 with _writing_into(args.out):
                     writer.add_all(results)
-        if progress:
-            print(writer.table(run.timing_s), flush=True)
+        # the table to a reader gone: the files are still written (status 141 after)
+        reader_gone = progress and not _print_out(writer.table(run.timing_s))
         messages = run.warnings                # a figure that cannot be drawn adds its own
         with _writing_into(args.out):
             written = writer.finish(run.timing_s, messages, progress=progress)
@@ -216,9 +275,9 @@ def cmd_run(args) -> int:
                     "run did not write (an earlier run's?)"]
     for message in messages:
         print(f"contact: warning: {message}", file=sys.stderr)
-    if progress:
-        print(f"  wrote {', '.join(str(p) for p in written)}")
-    return 0
+    if progress and not reader_gone:
+        reader_gone = not _print_out(f"  wrote {', '.join(str(p) for p in written)}")
+    return EXIT_BROKEN_PIPE if reader_gone else 0
 
 
 @contextlib.contextmanager

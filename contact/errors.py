@@ -5,6 +5,8 @@ value received and what is allowed.
 """
 from __future__ import annotations
 
+import numpy as np
+
 from sie.errors import check_finite_real
 
 __all__ = [
@@ -16,11 +18,14 @@ __all__ = [
     "DirectionError",
     "PunchGeometryError",
     "ProfileCallableError",
+    "CauchyTransformError",
     "ContactLossError",
     "StressPointError",
     "UnboundedStressError",
     "NearRayleighWarning",
     "check_finite",
+    "check_number",
+    "real_array",
 ]
 
 
@@ -98,7 +103,8 @@ class FrictionError(ContactInputError):
     """Friction coefficient negative or not finite.
 
     The sense of sliding is ``direction``, not the sign of the friction coefficient.  Raised
-    by :func:`~contact.solve` and :func:`~contact.load_curve`.
+    by :func:`~contact.solve` and :func:`~contact.load_curve`, and by
+    :func:`~contact.half_space_stress` for a ``q_ratio`` (signed) that is not a finite number.
 
     Examples
     --------
@@ -148,7 +154,12 @@ class ProfileCallableError(ContactInputError):
     """A user slope callable returned the wrong shape or a non-finite value.
 
     Raised by :class:`~contact.ProfilePunch` (``slope`` / ``height`` not callable) and when
-    its slope or height is evaluated (not vectorised, complex, raising or not finite).
+    its slope or height is evaluated (not vectorised, complex, raising or not finite).  An
+    exception of any kind raised inside the user's slope or height (any ``Exception``:
+    KeyError, ZeroDivisionError, ...) becomes this error, which names the callable and the X
+    it was called at and has the exception as its cause; the package's own errors raised
+    there (a :class:`ContactInputError` such as a sampled face's OutsideSamplesError, a
+    :class:`sie.SIEInputError`) pass through unchanged.
 
     Examples
     --------
@@ -157,6 +168,27 @@ class ProfileCallableError(ContactInputError):
     Traceback (most recent call last):
         ...
     contact.errors.ProfileCallableError: slope must be a vectorised callable dv/dX(X), got str
+    """
+
+
+class CauchyTransformError(ContactInputError):
+    """A Cauchy transform given to :func:`~contact.half_space_stress` is not callable, raised,
+    or returned values that are not those of a transform: not vectorised, not complex, not
+    finite.
+
+    At a point z with Im z > 0 the transform C(z) = (1/pi) int p(t) / (t - z) dt is complex
+    (its imaginary part is the Poisson integral of p): a callable that returns a real array
+    there has dropped (or never computed) the imaginary part, and is refused.  The message
+    names the callable (``cauchy_p`` or ``cauchy_q``) and the points where it was called.
+
+    Examples
+    --------
+    >>> import numpy as np, contact
+    >>> contact.half_space_stress(contact.Isotropic(1.0, 0.3), 0.0, 1.0, -2.0,
+    ...                           lambda z: -1.0 / (np.pi * z.real))
+    Traceback (most recent call last):
+        ...
+    contact.errors.CauchyTransformError: cauchy_p must return complex values C(z) ...
     """
 
 
@@ -245,5 +277,70 @@ class NearRayleighWarning(UserWarning):
 
 def check_finite(name: str, value, error=ContactInputError) -> float:
     """Return ``value`` as a float, or raise ``error`` naming ``name`` if it is not a finite real
-    (:func:`sie.errors.check_finite_real`, with the contact layer's base error as default)."""
+    number (:func:`check_number`, then :func:`sie.errors.check_finite_real`; the contact
+    layer's base error by default)."""
+    check_number(name, value, error)
     return check_finite_real(name, value, error)
+
+
+def is_number(value) -> bool:
+    """Whether ``value`` is a real number: an int or a float (Python's or numpy's, a 0-d
+    numeric array), or another object that converts itself to a float (``Fraction``,
+    ``Decimal``).  Text is not, though ``float`` would parse it (``"0.5"``, numpy's ``str_``,
+    an array of strings), nor a bool, nor a complex number."""
+    if isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
+        return False
+    if isinstance(value, (np.ndarray, np.generic)):
+        return value.dtype.kind in "iuf"
+    return hasattr(value, "__float__") or hasattr(value, "__index__")
+
+
+def _what(value) -> str:
+    """A value refused as a number and its type, for the message: ``'0.5' (a str, not a
+    real number)``."""
+    if isinstance(value, np.generic):
+        value = value.item()                # np.str_('0.5') reads as '0.5'
+    if isinstance(value, np.ndarray):
+        kind = f"an array of {value.dtype}"
+    else:
+        kind = type(value).__name__
+        kind = f"{'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+    return f"{value!r} ({kind}, not a real number)"
+
+
+def check_number(name: str, value, error=ContactInputError,
+                 allowed: str = "a finite real number") -> None:
+    """Raise ``error`` naming ``name``, what was given and that ``allowed`` (a number) is
+    required, unless ``value`` is a real number (:func:`is_number`).
+
+    The one place where the contact layer tells a number from something ``float`` would
+    also take: text (``float("0.5")`` parses it) and bools are refused, so that
+    ``Orthotropic(C11="159")`` or ``load="0.01"`` fail where given, and numpy's numeric
+    scalars (``np.float64``, ``np.int64``) are numbers."""
+    if not is_number(value):
+        raise error(f"{name} must be {allowed}, got {_what(value)}")
+
+
+def real_array(name: str, values, error=ContactInputError,
+               allowed: str = "real numbers") -> np.ndarray:
+    """``values`` (a number or a sequence of them) as a float array, or ``error`` naming
+    ``name`` and the first entry that is not a real number (:func:`is_number`: text, a bool,
+    a complex number), or saying that ``values`` is ragged.  Finiteness is the caller's to
+    check."""
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError) as exc:          # ragged
+        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
+            from None
+    if arr.dtype.kind in "iuf":
+        return arr.astype(float, copy=False)
+    entries = arr if isinstance(values, np.ndarray) else np.asarray(values, dtype=object)
+    bad = next((v for v in entries.flat if not is_number(v)), None)
+    if bad is not None:
+        among = "" if arr.ndim == 0 else f" among {values!r}"
+        raise error(f"{name} must be {allowed}, got {_what(bad)}{among}")
+    try:
+        return arr.astype(float)
+    except (TypeError, ValueError) as exc:          # numbers nested in sequences
+        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
+            from None

@@ -27,32 +27,62 @@ from typing import Callable, Optional
 
 import numpy as np
 
-from .errors import ProfileCallableError, PunchGeometryError
+from sie.errors import SIEInputError
+
+from .errors import (ContactInputError, ProfileCallableError, PunchGeometryError, check_number,
+                     real_array)
 
 __all__ = ["Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch",
            "ProfilePunch"]
 
 
 def _positive(name: str, value) -> float:
+    """A punch dimension: a number (:func:`contact.errors.check_number`), finite and > 0."""
+    check_number(name, value, PunchGeometryError, "a positive finite number")
     try:
         v = float(value)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError):         # e.g. an array of several numbers
         raise PunchGeometryError(f"{name} must be a positive finite number, got {value!r}") from None
     if not math.isfinite(v) or v <= 0.0:
         raise PunchGeometryError(f"{name} must be a positive finite number, got {v!r}")
     return v
 
 
+def _called(fn, X, what):
+    """fn(X) for the punch's ``what`` ("slope" | "height"); an exception of any kind raised
+    inside it becomes a ProfileCallableError naming ``what`` and the X it was called at
+    (chained), except the package's own errors (:class:`~contact.ContactInputError`, among
+    them a sampled face's OutsideSamplesError, and :class:`sie.SIEInputError`), which say
+    what went wrong themselves and pass through unchanged.  KeyboardInterrupt and SystemExit
+    are not wrapped."""
+    try:
+        return fn(X)
+    except (ContactInputError, SIEInputError):
+        raise
+    except Exception as exc:
+        raise ProfileCallableError(
+            f"the punch {what} raised {type(exc).__name__} when called at {_points(X)}: "
+            f"{exc}") from exc
+
+
+def _points(X) -> str:
+    """Where a punch callable was called, for a message: X = x for one point, the range of
+    X for several."""
+    X = np.asarray(X, dtype=float).ravel()
+    if X.size == 1:
+        return f"X = {float(X[0])!r}"
+    seen = X[np.isfinite(X)]                # scipy's derivative passes NaN for points done
+    if seen.size == 0:
+        return f"{X.size} points X, none finite"
+    return (f"{X.size} points X in [{float(seen.min())!r}, {float(seen.max())!r}] (first "
+            f"X = {float(X[0])!r})")
+
+
 def _checked(fn, X, what):
     """fn(X) for the punch's ``what`` ("slope" | "height"), as a real array of X's shape with
-    finite values, else ProfileCallableError naming what went wrong."""
+    finite values, else ProfileCallableError naming what went wrong (:func:`_called`)."""
     X = np.asarray(X, dtype=float)
-    try:
-        out = fn(X)
-    except (TypeError, ValueError, ArithmeticError) as exc:
-        raise ProfileCallableError(
-            f"the punch {what} raised {type(exc).__name__}: {exc}") from exc
-    out = np.asarray(out)
+    out = np.asarray(_called(fn, X, what))
     if np.iscomplexobj(out):
         raise ProfileCallableError(f"the punch {what} must return real values, got complex")
     out = np.asarray(out, dtype=float)
@@ -509,11 +539,7 @@ class ProfilePunch(Punch):
             hi = math.inf if cs[1] is None else cs[1]
         self._extent = (lo, hi)
         self.corners = tuple(x if math.isfinite(x) else None for x in self._extent)
-        try:
-            br = tuple(sorted(float(b) for b in breaks))
-        except (TypeError, ValueError):
-            raise PunchGeometryError(
-                f"breaks must be a sequence of finite X values, got {breaks!r}") from None
+        br = _breaks(breaks)
         if not all(math.isfinite(b) for b in br):
             raise PunchGeometryError(f"breaks must be finite, got {br}")
         self.breaks = tuple(b for b in br if lo < b < hi)
@@ -587,8 +613,10 @@ class ProfilePunch(Punch):
         direction = np.where(central, 0, np.where(right >= left, 1, -1))
         room = np.where(central, room_c / 4.5, np.maximum(left, right) / 9.0)
         step = np.minimum(s0, room)
-        # the raw height: scipy passes NaN for elements it has finished with
-        res = derivative(lambda x: np.asarray(self._h(x), dtype=float), X, initial_step=step,
+        # the raw height (scipy passes NaN for elements it has finished with), an error
+        # inside it named as the height's (_called)
+        res = derivative(lambda x: np.asarray(_called(self._h, x, "height"), dtype=float), X,
+                         initial_step=step,
                          step_direction=direction, order=8, maxiter=6,
                          tolerances=dict(atol=0.0, rtol=1e-14))
         df = np.asarray(res.df, dtype=float).reshape(X.shape)
@@ -610,6 +638,22 @@ class ProfilePunch(Punch):
         return f"ProfilePunch({', '.join(parts)})"
 
 
+def _breaks(breaks) -> tuple:
+    """The break points as ascending floats; PunchGeometryError unless a flat sequence of
+    numbers (:func:`contact.errors.real_array`: text and bools are not numbers)."""
+    allowed = "a sequence of finite X values"
+    try:
+        if isinstance(breaks, (str, bytes)):
+            raise TypeError
+        items = breaks if isinstance(breaks, np.ndarray) else list(breaks)
+    except TypeError:
+        raise PunchGeometryError(f"breaks must be {allowed}, got {breaks!r}") from None
+    br = real_array("breaks", items, PunchGeometryError, allowed)
+    if br.ndim != 1:
+        raise PunchGeometryError(f"breaks must be {allowed}, got {breaks!r}")
+    return tuple(sorted(br.tolist()))
+
+
 def _corners(corners):
     try:
         left, right = corners
@@ -621,6 +665,7 @@ def _corners(corners):
         if c is None:
             cs.append(None)
             continue
+        check_number(f"corners[{name}]", c, PunchGeometryError, "a finite X or None")
         try:
             c = float(c)
         except (TypeError, ValueError):
@@ -639,11 +684,17 @@ def _face(face):
     if face is None:
         return (-math.inf, math.inf)
     try:
-        lo, hi = (float(v) for v in face)
+        if isinstance(face, (str, bytes)):
+            raise TypeError
+        lo, hi = face
     except (TypeError, ValueError):
         raise PunchGeometryError(
             f"face must be a pair (X_min, X_max) of numbers (either may be infinite), got "
             f"{face!r}") from None
+    for side, v in (("X_min", lo), ("X_max", hi)):
+        check_number(f"face {side}", v, PunchGeometryError,
+                     "a number (either side of the face may be infinite)")
+    lo, hi = float(lo), float(hi)
     if math.isnan(lo) or math.isnan(hi):
         raise PunchGeometryError(f"face must not contain NaN, got {face!r}")
     if not lo < hi:

@@ -7,12 +7,13 @@ Hc[f](X) = (1/pi) PV int f(t)/(t - X) dt).
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .constants import SurfaceConstants
-from .errors import ContactInputError
+from .errors import ContactInputError, check_number, real_array
 from .punches import Punch
 
 __all__ = ["ContactResult", "ContactZone", "LoadCurve"]
@@ -241,12 +242,7 @@ class ContactResult:
         return 0.5 * (e[1] + e[0])
 
     def _X(self, X):
-        try:
-            if np.iscomplexobj(X):              # numpy would drop the imaginary part
-                raise TypeError
-            X = np.asarray(X, dtype=float)
-        except (TypeError, ValueError):         # complex, strings, ragged
-            raise ContactInputError(f"X must be finite real numbers, got {X!r}") from None
+        X = real_array("X", X, ContactInputError, "finite real numbers")  # not text, complex
         if not np.all(np.isfinite(X)):
             raise ContactInputError("X must be finite real numbers")
         return X
@@ -400,18 +396,8 @@ class ContactResult:
         a = self.zone_scale
         if region is None:
             region = ((xl - a, xr + a), (-3.0 * a, 0.0))
-        try:
-            nx, ny = (int(g) for g in grid)
-        except (TypeError, ValueError):
-            raise ContactInputError(f"grid must be (nx, ny), got {grid!r}") from None
-        if nx < 3 or ny < 3:
-            raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
-        try:
-            (x0, x1), (y0, y1) = region
-            x0, x1, y0, y1 = (float(v) for v in (x0, x1, y0, y1))
-        except (TypeError, ValueError):
-            raise ContactInputError(f"region must be ((X_min, X_max), (Y_min, Y_max)), got "
-                                    f"{region!r}") from None
+        nx, ny = _grid(grid)
+        x0, x1, y0, y1 = _region(region)
         if not all(np.isfinite([x0, x1, y0, y1])) or not (x0 < x1 and y0 < y1 <= 0.0):
             raise ContactInputError(f"region must be finite with X_min < X_max and "
                                     f"Y_min < Y_max <= 0, got {region!r}")
@@ -439,6 +425,39 @@ class ContactResult:
         return StressExtrema(max((f.max_shear for f in found), key=lambda e: e.value),
                              max((f.max_tension for f in found), key=lambda e: e.value),
                              checked[0])
+
+
+def _grid(grid) -> tuple:
+    """(nx, ny) of a stress_extrema grid: integers (numbers of integral value, not text or
+    bools: :func:`contact.errors.check_number`), at least 3 each."""
+    try:
+        nx, ny = grid
+    except (TypeError, ValueError):
+        raise ContactInputError(f"grid must be (nx, ny), got {grid!r}") from None
+    for name, g in (("nx", nx), ("ny", ny)):
+        check_number(f"grid {name}", g, ContactInputError, "an integer >= 3")
+        if not (math.isfinite(float(g)) and float(g) == int(g)):
+            raise ContactInputError(f"grid {name} must be an integer >= 3, got {g!r}")
+    if int(nx) < 3 or int(ny) < 3:
+        raise ContactInputError(f"grid must have at least 3 x 3 points, got {grid!r}")
+    return int(nx), int(ny)
+
+
+def _region(region) -> tuple:
+    """x0, x1, y0, y1 of a region ((X_min, X_max), (Y_min, Y_max)) as floats: numbers, not
+    text or bools (:func:`contact.errors.check_number`); their order is the caller's to
+    check."""
+    shape = "((X_min, X_max), (Y_min, Y_max))"
+    try:
+        (x0, x1), (y0, y1) = region
+    except (TypeError, ValueError):
+        raise ContactInputError(f"region must be {shape}, got {region!r}") from None
+    for name, v in (("X_min", x0), ("X_max", x1), ("Y_min", y0), ("Y_max", y1)):
+        check_number(f"region {name}", v, ContactInputError, f"a number (region = {shape})")
+    try:
+        return tuple(float(v) for v in (x0, x1, y0, y1))
+    except (TypeError, ValueError):
+        raise ContactInputError(f"region must be {shape}, got {region!r}") from None
 
 
 class _ClosedFormContactResult(ContactResult):

@@ -33,7 +33,7 @@ from .constants import SurfaceConstants, surface_constants
 from .continuation import ZoneState, follow_load, inspect_state
 from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
-                     check_finite)
+                     check_finite, real_array)
 from .material import Orthotropic
 from .punches import Punch
 from .result import (RESIDUAL_U, ContactResult, ContactZone, LoadCurve,
@@ -537,10 +537,7 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
     """
     _, friction, direction, tol = _check_inputs(material, punch, 1.0, speed, friction,
                                                 direction, "numeric", n, tol)
-    try:
-        P = np.array(loads, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise LoadError(f"loads must be a sequence of positive numbers, got {loads!r}") from None
+    P = real_array("loads", loads, LoadError, "a sequence of positive numbers").ravel()
     if P.size == 0:
         raise LoadError("loads must hold at least one load, got none")
     if not np.all(np.isfinite(P)) or not np.all(P > 0):

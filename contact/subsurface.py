@@ -73,11 +73,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from .constants import surface_constants
-from .errors import ContactInputError, MaterialError, StressPointError, UnboundedStressError
+from .errors import (CauchyTransformError, ContactInputError, FrictionError, MaterialError,
+                     StressPointError, UnboundedStressError, check_finite, real_array)
 from .material import Orthotropic
 
 __all__ = ["HalfSpaceModes", "StressField", "StressExtrema", "Extremum", "half_space_stress",
-           "field_extrema", "StressPointError", "UnboundedStressError"]
+           "field_extrema", "StressPointError", "UnboundedStressError", "CauchyTransformError"]
 
 #: |delta| below this fraction of eta_m: the repeated-root form (interpolation in delta^2)
 _NEAR = 1e-3
@@ -329,10 +330,13 @@ class HalfSpaceModes:
 
 
 def stress_points(X, Y):
-    """X, Y as float arrays of one shape; raise StressPointError unless finite with Y <= 0."""
+    """X, Y as float arrays of one shape; raise StressPointError unless real numbers (not
+    text, bools or complex: :func:`contact.errors.real_array`), finite, with Y <= 0."""
+    X = real_array("X", X, StressPointError)
+    Y = real_array("Y", Y, StressPointError)
     try:
-        X, Y = np.broadcast_arrays(np.asarray(X, dtype=float), np.asarray(Y, dtype=float))
-    except (TypeError, ValueError) as exc:
+        X, Y = np.broadcast_arrays(X, Y)
+    except ValueError as exc:
         raise StressPointError(f"X and Y must be real arrays of broadcastable shapes: {exc}") \
             from None
     if not (np.all(np.isfinite(X)) and np.all(np.isfinite(Y))):
@@ -369,8 +373,22 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
     Raises
     ------
     StressPointError
-        Points not finite, or Y >= 0 (the surface itself is the traction: see
-        :meth:`contact.ContactResult.stress`).
+        Points not real numbers or not finite, or Y >= 0 (the surface itself is the
+        traction: see :meth:`contact.ContactResult.stress`).
+    ContactInputError
+        ``material`` not an :class:`~contact.Orthotropic`; both ``cauchy_q`` and
+        ``q_ratio`` given.
+    SpeedError, FrictionError
+        ``c`` outside [0, c_R) or not a number; ``q_ratio`` not a finite number.
+    CauchyTransformError
+        ``cauchy_p`` or ``cauchy_q`` not callable, raising (any exception, chained as the
+        cause; the message names the callable and the points), or returning values of the
+        wrong shape (it is called with complex arrays of the points' shape), not complex, or
+        not finite.  A transform must return complex values: at Im z > 0 the transform of a
+        traction is complex (its imaginary part is the traction's Poisson integral), and a
+        real array there has lost that part (``lambda z: -1 / (np.pi * z.real)`` gives
+        sigma_yy = -0.159 for Flamant's -0.637), so a real dtype is refused whatever its
+        values.
 
     References
     ----------
@@ -391,17 +409,77 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
     >>> bool(abs(f.sigma_xx) < 1e-12 and abs(f.sigma_xy) < 1e-12)
     True
     """
+    if not isinstance(material, Orthotropic):
+        raise ContactInputError(f"material must be a contact.Orthotropic (or "
+                                f"contact.Isotropic(...)), got {type(material).__name__}")
     X, Y = stress_points(X, Y)
     if np.any(Y == 0):
         raise StressPointError("Y must be < 0 here (on Y = 0 the stresses are the tractions)")
+    for name, fn in (("cauchy_p", cauchy_p), ("cauchy_q", cauchy_q)):
+        if not callable(fn) and not (name == "cauchy_q" and fn is None):
+            raise CauchyTransformError(
+                f"{name} must be a vectorised callable z -> C(z) = (1/pi) int f(t) / (t - z) "
+                f"dt at complex z, Im z > 0, got {type(fn).__name__}")
     if cauchy_q is not None and q_ratio is not None:
         raise ContactInputError("give cauchy_q or q_ratio, not both")
+    if q_ratio is not None:
+        q_ratio = check_finite("q_ratio", q_ratio, FrictionError)
     modes = HalfSpaceModes.of(material, c)
     Z = modes.points(X, Y)
-    Cp = [np.asarray(cauchy_p(z), dtype=complex) for z in Z]
-    Cq = None if cauchy_q is None else [np.asarray(cauchy_q(z), dtype=complex) for z in Z]
+    Cp = [_transform(cauchy_p, "cauchy_p", z, X, Y) for z in Z]
+    Cq = None if cauchy_q is None else [_transform(cauchy_q, "cauchy_q", z, X, Y) for z in Z]
     sxx, syy, sxy = modes.stresses(Cp, Cq, q_ratio)
     return StressField(X, Y, sxx, syy, sxy)
+
+
+def _transform(fn, name, z, X, Y) -> np.ndarray:
+    """``fn(z)``, a user's Cauchy transform at the complex points z (of the shape of X, Y),
+    as a complex array of that shape with finite values, else CauchyTransformError naming
+    ``name`` and where it was called: any exception inside it (chained), a result of
+    another shape, of a real dtype (half_space_stress: the transform is complex at
+    Im z > 0), or not finite."""
+    try:
+        out = np.asarray(fn(z))
+    except Exception as exc:
+        raise CauchyTransformError(f"{name} raised {type(exc).__name__} when called at "
+                                   f"{_called_at(z, X, Y)}: {exc}") from exc
+    if out.shape != z.shape:
+        raise CauchyTransformError(
+            f"{name} must be vectorised: called with complex z of shape {z.shape} (at "
+            f"{_called_at(z, X, Y)}) it must return that shape, got {out.shape}")
+    if out.dtype.kind != "c":
+        if out.dtype.kind != "O":
+            raise CauchyTransformError(
+                f"{name} must return complex values C(z) (at Im z > 0 a Cauchy transform is "
+                f"complex: its imaginary part is the Poisson integral of the traction), got "
+                f"dtype {out.dtype} at {_called_at(z, X, Y)}: compute it from the complex z "
+                f"itself (e.g. -P / (np.pi * z) for a line load P)")
+        try:
+            out = out.astype(complex)
+        except (TypeError, ValueError) as exc:
+            raise CauchyTransformError(f"{name} must return complex numbers, got objects "
+                                       f"that are not ({exc})") from None
+    bad = ~np.isfinite(out)
+    if bad.any():
+        k = int(np.flatnonzero(bad.ravel())[0])
+        raise CauchyTransformError(
+            f"{name} returned a non-finite value {complex(out.ravel()[k])!r} at "
+            f"z = {complex(z.ravel()[k])!r}, for the point (X, Y) = "
+            f"({float(X.ravel()[k])!r}, {float(Y.ravel()[k])!r})")
+    return out
+
+
+def _called_at(z, X, Y) -> str:
+    """Where a transform was called, for a message: the one z and its point (X, Y), or how
+    many there were, the range of X and Y, and the first z."""
+    if z.size == 1:
+        return (f"z = {complex(z.ravel()[0])!r}, for the point (X, Y) = "
+                f"({float(X.ravel()[0])!r}, {float(Y.ravel()[0])!r})")
+    if z.size == 0:
+        return "an empty array of z"
+    return (f"the {z.size} points z = X - i eta Y of X in [{float(X.min())!r}, "
+            f"{float(X.max())!r}], Y in [{float(Y.min())!r}, {float(Y.max())!r}] (first "
+            f"z = {complex(z.ravel()[0])!r})")
 
 
 @dataclass(frozen=True)

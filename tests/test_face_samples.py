@@ -113,10 +113,11 @@ def test_outside_tangent_continuation():
 
 def test_contact_solve_needs_the_continuation():
     """contact.solve checks the gap up to 16 contact widths beyond each free end: a face that
-    raises outside its samples fails there, with the hint."""
+    raises outside its samples fails there, with the hint (its own OutsideSamplesError, which
+    the punch's slope passes through unchanged)."""
     X = np.linspace(-2.0, 2.0, 1000)
     face = face_from_samples(X, X**2 / (2 * R))
-    with pytest.raises(contact.ProfileCallableError, match="outside='tangent'"):
+    with pytest.raises(OutsideSamplesError, match="outside='tangent'"):
         contact.solve(MAT, contact.ProfilePunch(face.slope, breaks=face.breaks), load=0.01, **KW)
 
 

@@ -19,8 +19,11 @@ import json
 from json.encoder import encode_basestring_ascii
 import math
 import os
+import re
 import shutil
+import socket
 import tempfile
+import warnings
 import zipfile
 from pathlib import Path
 
@@ -63,6 +66,8 @@ def write_outputs(result: SceneResult, out_dir, *, figures: bool | None = None,
         The files written.
     """
     with SceneWriter(result.scene, out_dir, len(result.cases), figures=figures) as writer:
+        for note in writer.staging_notes:
+            warnings.warn(note, UserWarning, stacklevel=2)
         for k in range(0, len(result.cases), _WRITE_SLICE):
             writer.add_all(result.cases[k:k + _WRITE_SLICE])
         return writer.finish(result.timing_s, result.warnings, progress=progress)
@@ -77,9 +82,13 @@ class SceneWriter:
     extremes (:class:`TableSummary`) and, with the ``"subsurface"`` field, each case's index
     and label.  :meth:`finish` writes the rest.
 
-    The files are made in a hidden directory inside ``out_dir`` and moved into it by
-    :meth:`finish`; a writer left unfinished (an error, a failing case) removes them, and
-    ``out_dir`` too when it made it.  Use it as a context manager (or call :meth:`abort`).
+    The files are made in a hidden directory inside ``out_dir`` (its staging folder,
+    ``.contact-writing-<host>-<pid>-<random>``) and moved into it by :meth:`finish`; a writer
+    left unfinished (an error, a failing case) removes them, and ``out_dir`` too when it made
+    it.  Use it as a context manager (or call :meth:`abort`).  A run killed outright
+    (SIGKILL, the out-of-memory killer) cannot remove its staging folder: the next writer
+    into ``out_dir`` removes the staging folders of the runs on this host whose process has
+    ended (:func:`remove_dead_staging`) and says so in :attr:`staging_notes`.
 
     Parameters
     ----------
@@ -93,6 +102,13 @@ class SceneWriter:
     table : bool
         Keep the printed table's rows and extremes (:meth:`table`); False for a run that
         prints none (``contact run --quiet``).
+
+    Attributes
+    ----------
+    staging_notes : list of str
+        What :func:`remove_dead_staging` found in ``out_dir`` when the writer was made: the
+        dead runs' staging folders it removed, and those it kept because their owner
+        cannot be told (``contact run`` prints them as warnings).
     """
 
     def __init__(self, scene: Scene, out_dir, count: int, *, figures: bool | None = None,
@@ -102,7 +118,8 @@ class SceneWriter:
         self.out = Path(out_dir)
         self._made_out = not self.out.exists()
         self.out.mkdir(parents=True, exist_ok=True)
-        self._spool = Path(tempfile.mkdtemp(prefix=".contact-writing-", dir=self.out))
+        self.staging_notes = remove_dead_staging(self.out)
+        self._spool = Path(tempfile.mkdtemp(prefix=_staging_prefix(), dir=self.out))
         self._files = []
         self.summary = TableSummary(scene, count) if table else None
         self.curve_fields = [f for f in scene.fields if f in CURVE_FIELDS]
@@ -240,6 +257,81 @@ class SceneWriter:
                 self.out.rmdir()
             except OSError:                    # something else was put there meanwhile
                 pass
+
+
+#: The start of the name of a :class:`SceneWriter`'s staging folder in the output directory;
+#: the host, the writer's process id and a random part follow, separated by "-".
+STAGING_PREFIX = ".contact-writing-"
+
+
+def _host() -> str:
+    """This machine's name as it goes into a staging folder's name (no "-": the name is
+    split at them)."""
+    return re.sub(r"[^A-Za-z0-9.]", "_", socket.gethostname())[:64] or "_"
+
+
+def _staging_prefix() -> str:
+    """``.contact-writing-<host>-<pid>-``: mkdtemp adds the random part."""
+    return f"{STAGING_PREFIX}{_host()}-{os.getpid()}-"
+
+
+def staging_owner(name: str):
+    """(host, pid) of the run that made the staging folder ``name``, or None for a name not
+    of that form (another program's, or made by a version of contact that did not record
+    its owner)."""
+    if not name.startswith(STAGING_PREFIX):
+        return None
+    parts = name[len(STAGING_PREFIX):].rsplit("-", 2)
+    if len(parts) != 3 or not parts[0] or not parts[1].isdigit() or int(parts[1]) == 0:
+        return None
+    return parts[0], int(parts[1])
+
+
+def process_alive(pid: int) -> bool:
+    """Whether a process ``pid`` exists on this machine (signal 0: nothing is sent).  Where
+    that cannot be asked (not POSIX: os.kill would end the process there) it is taken to
+    exist.  A pid reused by an unrelated process since reads as alive."""
+    if pid == os.getpid() or os.name != "posix":
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:                        # PermissionError: another user's process
+        return True
+    return True
+
+
+def remove_dead_staging(out_dir) -> list[str]:
+    """Remove the staging folders (:data:`STAGING_PREFIX`) in ``out_dir`` of runs on this
+    host whose process has ended without finishing (killed outright: SIGKILL, the
+    out-of-memory killer) and return one message for each; a staging folder whose owner
+    cannot be told (made on another host sharing the directory, or with no process id in
+    its name) is kept and named in a message too.  A live run's folder (its process exists:
+    :func:`process_alive`) is left alone and not named."""
+    out, host = Path(out_dir), _host()
+    notes = []
+    for path in sorted(out.glob(STAGING_PREFIX + "*")):
+        if path.is_symlink() or not path.is_dir():
+            continue
+        owner = staging_owner(path.name)
+        if owner is None or owner[0] != host:
+            who = "no run recorded in its name" if owner is None else f"host {owner[0]}"
+            notes.append(f"{out} holds {path.name}, the staging folder of a contact run that "
+                         f"did not finish ({who}: whether it still runs cannot be told from "
+                         "here); remove it if no run is writing into this directory")
+            continue
+        if process_alive(owner[1]):
+            continue
+        shutil.rmtree(path, ignore_errors=True)
+        if path.exists():
+            notes.append(f"{out} holds {path.name}, the staging folder of a run (process "
+                         f"{owner[1]}) that ended without finishing; it could not be removed")
+        else:
+            notes.append(f"removed {path.name} from {out}: the staging folder of a run "
+                         f"(process {owner[1]}, no longer running) that ended without "
+                         "finishing (killed before it could clean up)")
+    return notes
 
 
 def _writing_bar(total: int, progress: bool, immediate: bool = False):
