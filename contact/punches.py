@@ -162,6 +162,10 @@ class Punch:
         """v(X), the height of the face, where known in closed form (see ``has_height``)."""
         raise NotImplementedError
 
+    #: the slope is the height's derivative by finite differences (a face given by its height
+    #: alone): the contact search explores the face through its height
+    slope_from_height: bool = False
+
     @property
     def has_height(self) -> bool:
         """Whether the face's height is known (else the contact search integrates the slope)."""
@@ -193,7 +197,8 @@ class Punch:
             from .face import Face
             face = self._face = Face(self.slope, extent=self.extent, breaks=self.breaks,
                                      height=self.height if self.has_height else None,
-                                     convex=self.convex, homogeneous=self.homogeneous)
+                                     convex=self.convex, homogeneous=self.homogeneous,
+                                     slope_from_height=self.slope_from_height)
         return face
 
     @property
@@ -581,6 +586,10 @@ class ProfilePunch(Punch):
     def has_height(self) -> bool:
         return self._h is not None
 
+    @property
+    def slope_from_height(self) -> bool:
+        return self._fn is None
+
     def _height(self, X):
         return self._h(X)
 
@@ -600,7 +609,9 @@ class ProfilePunch(Punch):
         lo, hi = self._extent
         walls = np.array([lo, *self.breaks, hi])
         finite = walls[np.isfinite(walls)]
-        scale = (finite[-1] - finite[0]) if finite.size >= 2 else 1.0
+        # the face's own length (not the user's unit): its edges' and breaks' span, else
+        # what the scan of its height finds (contact.face.Face.scale)
+        scale = (finite[-1] - finite[0]) if finite.size >= 2 else self.as_face().scale
         s0 = 0.0625 * max(scale, np.finfo(float).tiny)
         kl = np.searchsorted(walls, X, side="left") - 1         # the last wall below X
         kr = np.searchsorted(walls, X, side="right")            # the first wall above X
