@@ -53,7 +53,7 @@ import numpy as np
 
 import sie
 
-from .errors import ContactLossError, PunchGeometryError
+from .errors import ContactLossError, LoadError, PunchGeometryError
 from .face import outside
 from .zones import CORNER, FREE, Zone, ZoneEquations, _ordered
 
@@ -273,12 +273,27 @@ def follow_load(face, eq: ZoneEquations, loads):
                           like=seed)
         if loads[0] < seed.load:
             z, t = _predict(state, loads[0])
+            _check_representable(z, loads[0])
             state = _solve_at(face, eq, z, t, loads[0], like=state)
         state = _advance(face, eq, state, loads[0], direct=False)
     out = [state]
     for P in loads[1:]:
         out.append(_advance(face, eq, out[-1], P))
     return out
+
+
+def _check_representable(zones, P):
+    """LoadError where a zone predicted at load P is narrower than 64 rounding units of its
+    position: X cannot tell its ends apart (a load of 1e-100 on a face that touches at X = 1
+    makes a zone ~1e-50 wide)."""
+    for z in zones:
+        ulp = 64.0 * np.finfo(float).eps * max(abs(z.c), abs(z.d))
+        if not z.d - z.c > ulp:
+            x = 0.5 * (z.c + z.d)
+            raise LoadError(
+                f"load {P!r} is too small to resolve: the contact zone at X = {x:.6g} would be "
+                f"narrower than {ulp:.3g}, what floating point can tell apart there; raise "
+                "the load, or write X from an origin nearer to where the face touches")
 
 
 def _solve_at(face, eq, zones, totals, P, jacobian=None, like=None, previous=None,

@@ -259,13 +259,16 @@ class Face:
         return max(lo, f[0] - 8.0 * s), min(hi, f[-1] + 8.0 * s)
 
     def _window_samples(self, m):
-        """m samples of the search window, and the scan's samples inside it (features finer
-        than the window's spacing near the scan's centre)."""
+        """m samples of the search window, and the scan's samples inside it down to 1e-6 of
+        its width from the scan's centre (features finer than the window's spacing near the
+        centre; closer in, a slope that vanishes at the centre would read as a flat stretch
+        on the window's scale)."""
         a, b = self.search_window()
         X = np.linspace(a, b, m)
         if not self.convex:
-            S = self.scan().X
-            X = np.union1d(X, S[(S > a) & (S < b)])
+            sc = self.scan()
+            S = sc.X
+            X = np.union1d(X, S[(S > a) & (S < b) & (np.abs(S - sc.c0) >= 1e-6 * (b - a))])
         return X
 
     def lowest_points(self, m=2001):

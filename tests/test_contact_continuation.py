@@ -400,3 +400,20 @@ def test_next_to_a_merge_no_state_has_a_negative_pressure_or_gap(rel):
         span = (r.zones[0].ends[0], r.zones[-1].ends[1])
         rise = np.max(np.abs(punch.slope(np.linspace(*span, 101)))) * np.ptp(span)
         assert np.min(g) >= -1e-9 * rise
+
+
+def test_a_load_too_small_to_resolve_is_a_load_error():
+    """The W face touches at X = +-1: at a load of 1e-100 its zones would be ~1e-50 wide,
+    which X cannot resolve there; a LoadError says so (it was a ZeroDivisionError in
+    zones.py), for solve and load_curve alike.  A face that touches at X = 0 resolves such a
+    load: the Hertz half-width a = sqrt(4 P R / (pi E*)) to 1e-12."""
+    w = contact.ProfilePunch(lambda X: 0.2 * X * (X * X - 1.0),
+                             height=lambda X: 0.05 * (X * X - 1.0) ** 2, face=(-2.0, 2.0))
+    iso = contact.Isotropic(1.0, 0.3)
+    with pytest.raises(contact.LoadError, match="too small to resolve"):
+        contact.solve(iso, w, load=1e-100, speed=0.0)
+    with pytest.raises(contact.LoadError, match="too small to resolve"):
+        contact.load_curve(iso, w, [1e-300, 1e300], speed=0.0)
+    a = math.sqrt(4 * 1e-100 * 1.0 / (math.pi / (1 - 0.3 ** 2)))
+    r = contact.solve(iso, contact.ProfilePunch(lambda X: X), load=1e-100, speed=0.0)
+    assert r.ends == pytest.approx((-a, a), rel=1e-12)
