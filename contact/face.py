@@ -465,6 +465,7 @@ class _SideScan:
         self.side = side            # -1: toward -X, +1: toward +X
         self.r, self.s = [], []
         self.r_wrong = 0.0          # the largest r where side * H' <= 0
+        self.r_rising = 0.0         # the largest r where side * H' > 0
         self.r_moving = 0.0         # the largest r where H' != 0
         self.H = self.H_low = 0.0
         self.last = None            # (r, side * H') of the last sample
@@ -507,6 +508,8 @@ class _SideScan:
         wrong = up <= 0.0               # (NaN: a height difference at rounding, see _secants)
         if wrong.any():
             self.r_wrong = max(self.r_wrong, float(r[wrong][-1]))
+        if (up > 0.0).any():
+            self.r_rising = max(self.r_rising, float(r[up > 0.0][-1]))
         if (s != 0.0).any():
             self.r_moving = max(self.r_moving, float(r[s != 0.0][-1]))
         rr = np.concatenate([[self.last[0]], r]) if self.last else r
@@ -558,10 +561,12 @@ def _scan_verdict(state, c0, extent):
             raise PunchGeometryError(
                 f"the face is flat toward {name} from X = {start:.6g}, a side without an "
                 "edge: give the face's extent (face=) so that contact has an edge there")
-        where = c0 + side * t.r_wrong
+        a = c0 + side * t.r_rising
+        b = c0 + side * t.r_rising * 10.0 ** (1.0 / _PER_DECADE)     # the next sample
         far = c0 + side * t.r[-1][-1]
+        where = (f"stops rising outward between X = {a:.6g} and {b:.6g} and does not rise "
+                 "again" if t.r_rising > 0.0 else f"does not rise outward from X = {c0:.6g}")
         raise PunchGeometryError(
-            f"the face falls toward {name}: its height does not rise outward at X = "
-            f"{where:.6g} (sampled out to X = {far:.6g}), so contact cannot be shown to stay "
-            f"away from it there; give the face's extent (face=) where it ends"
-            + (f" ({t.error})" if t.error is not None else ""))
+            f"the face falls toward {name}: its height {where} (sampled out to X = {far:.6g}), so contact "
+            f"cannot be shown to stay away from it; give the face's extent (face=) where it "
+            "ends" + (f" ({t.error})" if t.error is not None else ""))

@@ -112,3 +112,15 @@ def test_a_face_that_rises_too_slowly_is_refused():
     punch = contact.ProfilePunch(lambda X: 1e-9 * X / (1.0 + X * X))
     with pytest.raises(contact.PunchGeometryError, match="face="):
         contact.solve(MAT, punch, load=1.0, speed=0.0)
+
+
+def test_a_face_that_falls_beyond_its_local_maximum_says_where():
+    """v = X^2/200 - X^4/12000 has its lowest point at 0 and local maxima at X = +-sqrt(30)
+    = +-5.477, beyond which it falls without bound: refused (it was a ContactLossError that
+    did not name the cause), naming the stretch of the scan where it stops rising."""
+    punch = contact.ProfilePunch(lambda X: X / 100 - X ** 3 / 3000)
+    with pytest.raises(contact.PunchGeometryError, match="falls toward -X") as exc:
+        contact.solve(MAT, punch, load=0.01, speed=0.0)
+    a, b = (float(x) for x in
+            str(exc.value).split("between X = ")[1].split(" and does")[0].split(" and "))
+    assert b < -np.sqrt(30.0) < a
