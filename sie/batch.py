@@ -29,7 +29,7 @@ from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidInter
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import N_BOUNDARY, _small_rule
 from .intervals import Interval
-from .jacobi import _jacobi_norms, _vandermonde
+from .jacobi import _jacobi_norms
 from .quadrature import _NEAR_MINUS_ONE, WeightedRule
 from .solution import IntervalSolution, Solution, equation_end_value
 from .special import jacobi_moment_shifted
@@ -60,30 +60,83 @@ def _norms(count, A, Bv, H):
         H[i] = _jacobi_norms(count, A[i], Bv[i])
 
 
+@jit(fastmath={"reassoc"})
+def _dot(u, v):
+    """sum_j u_j v_j, summed in vector lanes (``reassoc``: the order of the sum only)."""
+    s = 0.0
+    for j in range(u.shape[0]):
+        s += u[j] * v[j]
+    return s
+
+
+@jit()
+def _jacobi_start(a, b, x, p0, p1):
+    """p0 <- P_0^{(a,b)}(x) = 1, p1 <- P_1^{(a,b)}(x), as :func:`sie.jacobi._vandermonde`
+    (a + b + 2 as (a+1) + (b+1): no cancellation when both exponents are near -1)."""
+    ap1 = a + 1.0
+    abp2 = ap1 + (b + 1.0)
+    for j in range(x.shape[0]):
+        p0[j] = 1.0
+        p1[j] = ap1 + 0.5 * abp2 * (x[j] - 1.0)
+
+
+@jit()
+def _jacobi_step(k, a, b, x, cur, prev):
+    """prev <- P_{k+1}^{(a,b)}(x) from cur = P_k(x) and prev = P_{k-1}(x), k >= 1: the
+    recurrence of :func:`sie.jacobi._vandermonde` (DLMF 18.9.1-2), the same arithmetic."""
+    abp2 = (a + 1.0) + (b + 1.0)
+    s = 2.0 * (k - 1) + abp2
+    d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+    A = (s + 1.0) * (s + 2.0) * s / d
+    B = (s + 1.0) * (a * a - b * b) / d
+    C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
+    for j in range(x.shape[0]):
+        prev[j] = (A * x[j] + B) * cur[j] - C * prev[j]
+
+
+# The two kernels below run the recurrence over all points at once, one degree at a time:
+# memory O(points) instead of a points x degrees Vandermonde matrix (at n = 20000 that was
+# 3.2 GB per equation, and read down its columns: 20 s for one contact solve).
 @jit()
 def _project(count, A, Bv, X, OMEGA, F, out):
-    """out[i, m] = sum_j OMEGA[i, j] F[i, j] P_m^{(A_i, Bv_i)}(X[i, j])."""
+    """out[i, m] = sum_j OMEGA[i, j] F[i, j] P_m^{(A_i, Bv_i)}(X[i, j]), m < count."""
     q = X.shape[1]
+    prev = np.empty(q)
+    cur = np.empty(q)
     for i in range(A.shape[0]):
-        V = _vandermonde(count, A[i], Bv[i], X[i])
-        for m in range(count):
-            s = 0.0
-            for j in range(q):
-                s += OMEGA[i, j] * F[i, j] * V[j, m]
-            out[i, m] = s
+        x = X[i]
+        wf = OMEGA[i] * F[i]
+        _jacobi_start(A[i], Bv[i], x, prev, cur)
+        if count > 0:
+            out[i, 0] = _dot(wf, prev)
+        if count > 1:
+            out[i, 1] = _dot(wf, cur)
+        for k in range(1, count - 1):
+            _jacobi_step(k, A[i], Bv[i], x, cur, prev)
+            prev, cur = cur, prev
+            out[i, k + 1] = _dot(wf, cur)
 
 
 @jit()
 def _series(C, Al, Be, u, out):
-    """out[i, j] = sum_k C[i, k] P_k^{(Al_i, Be_i)}(u_j)."""
+    """out[i, j] = sum_k C[i, k] P_k^{(Al_i, Be_i)}(u_j) (summed in k, as written)."""
     n = C.shape[1]
+    m = u.shape[0]
+    prev = np.empty(m)
+    cur = np.empty(m)
     for i in range(C.shape[0]):
-        V = _vandermonde(n, Al[i], Be[i], u)
-        for j in range(u.shape[0]):
-            s = 0.0
-            for k in range(n):
-                s += C[i, k] * V[j, k]
-            out[i, j] = s
+        _jacobi_start(Al[i], Be[i], u, prev, cur)
+        for j in range(m):
+            out[i, j] = 0.0
+            if n > 0:
+                out[i, j] += C[i, 0] * prev[j]
+            if n > 1:
+                out[i, j] += C[i, 1] * cur[j]
+        for k in range(1, n - 1):
+            _jacobi_step(k, Al[i], Be[i], u, cur, prev)
+            prev, cur = cur, prev
+            for j in range(m):
+                out[i, j] += C[i, k + 1] * cur[j]
 
 
 @jit()

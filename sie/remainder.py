@@ -39,7 +39,9 @@ graded geometrically toward x0 down to |z - x0|.  Away from the interval the fix
 ``w_rule`` summed over Psi at its nodes is used where it resolves 1/(t - z) (Bernstein
 ellipses).  The logarithmic potential V(x) = (1/pi) int Psi log|x - t| dt: outside the
 interval (and at its ends) by ``w_rule`` with delta_phi at the nearer end subtracted (the
-closed form of the weight's potential adds it back), inside from V' = -H[Psi] =
+closed form of the weight's potential adds it back), its nodes grouped in clusters whose
+distances to that end span a factor 2, each summed by the expansion of log(D + d) about
+its centre (one logarithm per cluster, :func:`_log_sums`); inside from V' = -H[Psi] =
 (a Psi - r)/b integrated from the nearer end.
 """
 from __future__ import annotations
@@ -49,6 +51,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._jit import jit
 from .cauchy import Weight, _log_ratio, f0_closed, l0
 from .errors import call_checked
 from .gaussjacobi import gauss_jacobi_cached
@@ -107,43 +110,42 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details
     index of its piece and 1 - x, 1 + x to full relative precision (a node of a piece
     1e-12 wide at an end can round onto the end itself)."""
     los, his, counts = _panels(q, breaks, pts, q_small, shift)
+    halves = 0.5 * (his - los)
     xs, ws, ps, oms, ops = [], [], [], [], []
-    for qq in np.unique(counts):                 # all pieces with the same node count at once
-        sel = np.flatnonzero(counts == qq)
-        lo, hi = los[sel], his[sel]
-        half = 0.5 * (hi - lo)
-        inner = (lo != -1.0) & (hi != 1.0)
-        if inner.any():                          # Gauss-Legendre times the smooth weight
-            u, wu = gauss_jacobi_cached(int(qq), 0.0, 0.0)
-            li, hi_i, hf = lo[inner, None], hi[inner, None], half[inner, None]
-            x = li + hf * (u + 1.0)
-            # 1 -+ x from the piece's own distance to the end (exact next to it); formed from
-            # the rounded x, 1 + x at x ~ -1 + 1e-12 keeps 4 digits and int w loses 4e-10
-            one_minus = (1.0 - hi_i) + hf * (1.0 - u)
-            one_plus = (1.0 + li) + hf * (1.0 + u)
-            w = (hf * wu) * one_minus ** alpha * one_plus ** beta
-            xs.append(x.ravel())
-            ws.append(w.ravel())
-            ps.append(np.repeat(sel[inner], int(qq)))
-            oms.append(one_minus.ravel())
-            ops.append(one_plus.ravel())
-        for i in np.flatnonzero(~inner):         # an end piece: its end's Jacobi weight
-            ea = alpha if hi[i] == 1.0 else 0.0
-            eb = beta if lo[i] == -1.0 else 0.0
-            u, wu = gauss_jacobi_cached(int(qq), ea, eb)
-            x = lo[i] + half[i] * (u + 1.0)
-            w = wu * half[i] ** (1.0 + ea + eb)
-            if hi[i] != 1.0:
-                w = w * (1.0 - x) ** alpha
-            if lo[i] != -1.0:
-                w = w * (1.0 + x) ** beta
-            one_minus = half[i] * (1.0 - u) if hi[i] == 1.0 else 1.0 - x
-            one_plus = half[i] * (1.0 + u) if lo[i] == -1.0 else 1.0 + x
-            xs.append(x)
-            ws.append(w)
-            ps.append(np.full(x.size, sel[i]))
-            oms.append(one_minus)
-            ops.append(one_plus)
+    inner = np.flatnonzero((los != -1.0) & (his != 1.0))
+    if inner.size:                               # Gauss-Legendre times the smooth weight,
+        rules = [gauss_jacobi_cached(int(k), 0.0, 0.0) for k in counts[inner]]  # all at once
+        u = np.concatenate([r[0] for r in rules])
+        wu = np.concatenate([r[1] for r in rules])
+        li, hi_i, hf = (np.repeat(a[inner], counts[inner]) for a in (los, his, halves))
+        x = li + hf * (u + 1.0)
+        # 1 -+ x from the piece's own distance to the end (exact next to it); formed from
+        # the rounded x, 1 + x at x ~ -1 + 1e-12 keeps 4 digits and int w loses 4e-10
+        one_minus = (1.0 - hi_i) + hf * (1.0 - u)
+        one_plus = (1.0 + li) + hf * (1.0 + u)
+        xs.append(x)
+        ws.append((hf * wu) * one_minus ** alpha * one_plus ** beta)
+        ps.append(np.repeat(inner, counts[inner]))
+        oms.append(one_minus)
+        ops.append(one_plus)
+    for i in np.flatnonzero((los == -1.0) | (his == 1.0)):   # an end piece: its end's weight
+        lo, hi, half, qq = los[i], his[i], halves[i], int(counts[i])
+        ea = alpha if hi == 1.0 else 0.0
+        eb = beta if lo == -1.0 else 0.0
+        u, wu = gauss_jacobi_cached(qq, ea, eb)
+        x = lo + half * (u + 1.0)
+        w = wu * half ** (1.0 + ea + eb)
+        if hi != 1.0:
+            w = w * (1.0 - x) ** alpha
+        if lo != -1.0:
+            w = w * (1.0 + x) ** beta
+        one_minus = half * (1.0 - u) if hi == 1.0 else 1.0 - x
+        one_plus = half * (1.0 + u) if lo == -1.0 else 1.0 + x
+        xs.append(x)
+        ws.append(w)
+        ps.append(np.full(x.size, i))
+        oms.append(one_minus)
+        ops.append(one_plus)
     x, w = np.concatenate(xs), np.concatenate(ws)
     piece = np.concatenate(ps)
     order = np.lexsort((x, piece))               # by piece, then by node: ascending
@@ -228,6 +230,137 @@ def _panel_nodes(lo, hi, counts, at_left, at_right, lm, lp, ea, eb, ea1, eb1, ea
     return np.concatenate(ds), np.concatenate(ws), np.concatenate(owners)
 
 
+# -- compiled sums over the rules ------------------------------------------------------------
+@jit(fastmath={"reassoc"})
+def _difference_quotient_sums(x, rx, nodes, r_nodes, weights, out):
+    """out[i] = sum_j weights[j] (r_nodes[j] - rx[i]) / (nodes[j] - x[i]), the term of a node
+    within rounding of x[i] (nodes[j] == x[i]) left out: its weight is ~1e-13 (only the
+    innermost graded pieces come that close) and its quotient 0/0.
+
+    ``reassoc`` lets the compiler sum in vector lanes (2.5 times faster than one chain):
+    the order of the sum changes, so results agree to rounding.  This is delta_phi's cost:
+    points x nodes (2000 x 1200 for the rule ``w_rule`` of a face with two breaks)."""
+    m = nodes.shape[0]
+    for i in range(x.shape[0]):
+        xi = x[i]
+        ri = rx[i]
+        s = 0.0
+        for j in range(m):
+            den = nodes[j] - xi
+            term = (r_nodes[j] - ri) / den if den != 0.0 else 0.0
+            s += weights[j] * term
+        out[i] = s
+
+
+_LOG_SPAN = 2.0       # a cluster holds offsets e in [e0, 2 e0]: radius / centre <= 1/3
+_LOG_TERMS = 40       # expansion terms at most: (1/3)^41 / 41 < 1e-21
+_LOG_TOL = 1e-19      # truncation of the expansion, relative to sum |c_j| of the cluster
+_LOG_DIRECT = 6       # clusters of at most this many nodes are summed term by term
+
+
+@jit()
+def _cluster_starts(e):
+    """Start indices (and the end) of the clusters of the ascending offsets ``e`` > 0: each
+    runs from its first offset e0 up to _LOG_SPAN e0."""
+    starts = np.empty(e.shape[0] + 1, dtype=np.int64)
+    k = 0
+    i = 0
+    while i < e.shape[0]:
+        starts[k] = i
+        k += 1
+        top = _LOG_SPAN * e[i]
+        i += 1
+        while i < e.shape[0] and e[i] <= top:
+            i += 1
+    starts[k] = e.shape[0]
+    return starts[:k + 1].copy()
+
+
+@jit()
+def _log_moments(e, c, starts, centers, radii, terms, moments):
+    """Per cluster k (offsets e[starts[k]:starts[k+1]]): centre m_k and radius rho_k of its
+    offsets, moments[k, 0] = sum c_j and moments[k, p] = sum c_j s_j^p / p (p >= 1,
+    s_j = (e_j - m_k) / rho_k in [-1, 1]: scaled, no underflow for a cluster 1e-14 wide).
+
+    Each sum is compensated (Neumaier): a cluster holds up to ~1000 nodes, whose plain sum
+    loses ~sqrt(1000) ulps (4e-15 of M_0, against 1e-16 compensated)."""
+    comp = np.empty(moments.shape[1])
+    for k in range(starts.shape[0] - 1):
+        lo, hi = starts[k], starts[k + 1]
+        m = 0.5 * (e[lo] + e[hi - 1])
+        rho = 0.5 * (e[hi - 1] - e[lo])
+        centers[k] = m
+        radii[k] = rho
+        # the most terms any point z >= 0 asks for: those at z = 0, r = rho / m
+        r = rho / m if m > 0.0 else 0.0
+        p = 1
+        pw = r
+        while p < moments.shape[1] - 1 and pw * r > _LOG_TOL * (p + 1):
+            pw *= r
+            p += 1
+        terms[k] = p
+        scale = 1.0 / rho if rho > 0.0 else 0.0
+        for p in range(moments.shape[1]):
+            moments[k, p] = 0.0
+            comp[p] = 0.0
+        if hi - lo <= _LOG_DIRECT:
+            continue                        # summed term by term
+        for j in range(lo, hi):
+            sj = (e[j] - m) * scale
+            pw = c[j]
+            for p in range(terms[k] + 1):
+                if p > 0:
+                    pw *= sj
+                x = pw / p if p > 0 else pw
+                t = moments[k, p] + x
+                if abs(moments[k, p]) >= abs(x):
+                    comp[p] += (moments[k, p] - t) + x
+                else:
+                    comp[p] += (x - t) + moments[k, p]
+                moments[k, p] = t
+        for p in range(terms[k] + 1):
+            moments[k, p] += comp[p]
+
+
+@jit()
+def _log_sums(z, e, c, starts, centers, radii, terms, moments, out):
+    """out[i] = sum_j c_j log(z_i + e_j) for z_i >= 0 and offsets e_j > 0 in the clusters of
+    :func:`_log_moments`.
+
+    A cluster of more than :data:`_LOG_DIRECT` nodes: with D = z_i + m_k, r = rho_k / D
+    <= 1/3 (the cluster's offsets span at most a factor 2, and z_i >= 0),
+
+        sum_j c_j log(D + rho_k s_j) = M_0 log D - sum_{p >= 1} M_p (-r)^p,
+
+    cut after the terms the cluster needs at z = 0, where r is largest: the rest is below
+    1.5 _LOG_TOL sum |c_j|, ~1e-3 of the rounding of the sum itself.  One logarithm per
+    cluster and point (~50 clusters for the ~2000 nodes of a rule graded toward two breaks
+    and both ends) instead of one per node; the series is summed for all points at once
+    (Horner's rule across the points: independent lanes, not one chain per point)."""
+    npts = z.shape[0]
+    u = np.empty(npts)
+    acc = np.empty(npts)
+    for i in range(npts):
+        out[i] = 0.0
+    for k in range(starts.shape[0] - 1):
+        lo, hi = starts[k], starts[k + 1]
+        if hi - lo <= _LOG_DIRECT:
+            for i in range(npts):
+                for j in range(lo, hi):
+                    out[i] += c[j] * math.log(z[i] + e[j])
+            continue
+        p = terms[k]
+        for i in range(npts):
+            u[i] = -radii[k] / (z[i] + centers[k])
+            acc[i] = moments[k, p]
+        for q in range(p - 1, 0, -1):
+            mq = moments[k, q]
+            for i in range(npts):
+                acc[i] = acc[i] * u[i] + mq
+        for i in range(npts):
+            out[i] += moments[k, 0] * math.log(z[i] + centers[k]) - u[i] * acc[i]
+
+
 @dataclass(eq=False)
 class InversionRemainder:
     """delta_phi, its integral, Cauchy transform and logarithmic potential (module docstring).
@@ -237,8 +370,9 @@ class InversionRemainder:
     resolves the pole ~N, next to the interval r at ~20 nodes on each of
     2 log_4(2/|Im z|) graded pieces plus ~n (900 nodes at |Im z| = 1e-12 for n = 32, 1000
     for n = 128; 500 to 600 at 1e-6), where the coupling and kernel terms of r dominate
-    when present; the log potential outside ~N, inside ~q^2 (one piece of ``w_rule``
-    interpolated) plus r at q nodes per piece between breaks."""
+    when present; the log potential outside ~50 clusters (once ~40 N to set them up),
+    inside ~q^2 (one piece of ``w_rule`` interpolated) plus r at q nodes per piece between
+    breaks."""
     sol: object                 # the IntervalSolution (polynomial part)
     a: float
     b: float
@@ -253,6 +387,9 @@ class InversionRemainder:
     q: int = 0                          # nodes per piece between breaks of the 1/w rules
     breaks: np.ndarray = field(default_factory=lambda: np.empty(0))
     _wphi: np.ndarray | None = None     # w_rule weights times delta_phi at its nodes
+    _phi_w: np.ndarray | None = None    # delta_phi at the nodes of w_rule
+    _phi_ends: np.ndarray | None = None  # delta_phi at -1 and +1
+    _log_data: dict = field(default_factory=dict)   # per end: _log_clusters(end)
     _log_ends: tuple | None = None      # the log potential of w delta_phi at -1 and +1
     _interp: tuple | None = None        # barycentric data of delta_phi on the w_rule pieces
 
@@ -314,17 +451,12 @@ class InversionRemainder:
         integral = np.empty(x.shape)
         for idx, (nodes, weights, r_nodes) in enumerate(self.rules):
             where = np.flatnonzero(choice == idx)
-            # in blocks of points: memory O(_BLOCK) however many points and nodes (a face with
-            # 40 breaks asked for a 10854 x 21602 matrix, 1.9 GB, in one piece)
-            rows = max(1, _BLOCK // max(nodes.size, 1))
-            for start in range(0, where.size, rows):
-                sel = where[start:start + rows]
-                den = nodes[None, :] - x[sel][:, None]
-                num = r_nodes[None, :] - rx[sel][:, None]
-                # a node within rounding of x (only on the innermost graded pieces, whose
-                # weights are ~1e-13): drop that term instead of dividing 0 by 0
-                diff = np.divide(num, den, out=np.zeros_like(num), where=den != 0.0)
-                integral[sel] = diff @ weights / math.pi
+            if where.size:
+                sums = np.empty(where.size)
+                _difference_quotient_sums(np.ascontiguousarray(x.ravel()[where]),
+                                          np.ascontiguousarray(rx.ravel()[where]),
+                                          nodes, r_nodes, weights, sums)
+                integral.ravel()[where] = sums / math.pi
         k = sol.kappa
         if k == 1:
             pk = (sol.alpha + 1.0) + 0.5 * (sol.alpha + sol.beta + 2.0) * (x - 1.0)
@@ -355,8 +487,36 @@ class InversionRemainder:
         """w_rule weights times delta_phi at its nodes (computed once)."""
         if self._wphi is None:
             tw, ww = self.w_rule
-            self._wphi = ww * self.phi(tw)
+            self._phi_w = self.phi(tw)
+            self._wphi = ww * self._phi_w
         return self._wphi
+
+    def _log_clusters(self, side):
+        """What :func:`_log_sums` needs for points beyond the end ``side`` (+1 or -1), built
+        once per side: the offsets e_j = |side - t_j| of the nodes of ``w_rule`` (exact,
+        ascending), c_j = w_j (delta_phi(t_j) - delta_phi(side)), their clusters
+        (:func:`_cluster_starts`), centres, radii, term counts and moments
+        (:func:`_log_moments`), and delta_phi(side)."""
+        data = self._log_data.get(side)
+        if data is None:
+            _, ww = self.w_rule
+            _, om, op = self.w_ends
+            self._w_values()
+            if self._phi_ends is None:
+                self._phi_ends = self.phi(np.array([-1.0, 1.0]))
+            pe = float(self._phi_ends[(side + 1) // 2])
+            offsets = om if side == 1 else op
+            order = np.argsort(offsets, kind="stable")
+            e = np.ascontiguousarray(offsets[order])
+            c = np.ascontiguousarray((ww * (self._phi_w - pe))[order])
+            starts = _cluster_starts(e)
+            k = starts.size - 1
+            centers, radii = np.empty(k), np.empty(k)
+            terms = np.empty(k, dtype=np.int64)
+            moments = np.empty((k, _LOG_TERMS + 1))
+            _log_moments(e, c, starts, centers, radii, terms, moments)
+            data = self._log_data[side] = (e, c, starts, centers, radii, terms, moments, pe)
+        return data
 
     def _resolved_by_w_rule(self, v):
         """True where the fixed rule ``w_rule`` integrates 1/(t - v) to rounding on every
@@ -518,19 +678,18 @@ class InversionRemainder:
         return out
 
     def _log_outside(self, v, zm1, zp1):
-        tw, ww = self.w_rule
-        phi_w = self._w_values() / ww
+        """The |v| >= 1 branch of :meth:`log_potential`: the sum of ``w_rule`` over
+        w (delta_phi - delta_phi(e)) log|v - t|, |v - t| from the offsets to the nearer end
+        e (no cancellation next to it), by clusters of nodes (:func:`_log_sums`)."""
         right = zm1 >= 0.0
-        phi_e = self.phi(np.array([-1.0, 1.0]))
-        pe = np.where(right, phi_e[1], phi_e[0])
-        _, om, op = self.w_ends
         out = np.empty(v.shape)
-        for start in range(0, v.size, _CHUNK_FAR):
-            sl = slice(start, start + _CHUNK_FAR)
-            # |v - t| from the offset to the nearer end: no cancellation next to it
-            dist = np.where(right[sl, None], zm1[sl, None] + om[None, :],
-                            op[None, :] - zp1[sl, None])
-            out[sl] = (ww[None, :] * (phi_w[None, :] - pe[sl, None]) * np.log(dist)).sum(axis=1)
+        pe = np.empty(v.shape)
+        for side, sel, z in ((1, right, zm1), (-1, ~right, -zp1)):
+            if np.any(sel):
+                *clusters, pe[sel] = self._log_clusters(side)
+                sums = np.empty(int(np.count_nonzero(sel)))
+                _log_sums(np.ascontiguousarray(z[sel], dtype=float), *clusters, sums)
+                out[sel] = sums
         return out / math.pi + pe * l0(self.sol.weight_data, v)
 
     def _phi_in_piece(self, t, k):

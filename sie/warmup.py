@@ -15,8 +15,8 @@ __all__ = ["warm_up"]
 def warm_up() -> None:
     """Exercise each compiled kernel once: Gauss-Jacobi on every rung of its ladder (large
     exponents included), solve for every index, with a kernel, with breaks and on two
-    intervals, Cauchy transforms at real and complex points, the log potential, and a batch
-    of one-interval equations (:class:`sie.DominantBatch`)."""
+    intervals, Cauchy transforms at real and complex points, the log potential (with breaks
+    too), and a batch of one-interval equations (:class:`sie.DominantBatch`)."""
     from .batch import DominantBatch
     from .gaussjacobi import gauss_jacobi
     from .solver import solve
@@ -39,6 +39,7 @@ def warm_up() -> None:
                     kernel=lambda s, t: np.exp(s * t), breaks=(0.3,))
         sol.phi(np.array([0.1]))
         sol.cauchy(np.array([0.2, 1.5]))
+        sol.log_potential(np.array([-1.5, 0.2, 1.5]))    # the correction's sums by clusters
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
         eqs = DominantBatch(a=[0.7, -0.3], b=1.0, n=5, left="bounded", right="bounded")
