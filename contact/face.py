@@ -136,20 +136,28 @@ class Face:
         slope for all stretches."""
         lo_w, hi_w = self.search_window()
         unit = (hi_w - lo_w) / 64.0
-        starts, lengths, owner = [], [], []
-        for i, (p0, p1) in enumerate(zip(a.tolist(), b.tolist())):
-            pts = [p0] + [x for x in self.breaks if p0 < x < p1] + [p1]
-            for p, q in zip(pts[:-1], pts[1:]):
-                k = 8 if not unit > 0 else min(8, max(1, math.ceil((q - p) / unit)))
-                h = (q - p) / k
-                starts.extend(p + h * j for j in range(k))
-                lengths.extend([h] * k)
-                owner.extend([i] * k)
-        starts, lengths = np.array(starts), np.array(lengths)
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        # the pieces: stretch i runs over [a_i, breaks inside it..., b_i]
+        br = np.array(self.breaks) if self.breaks else np.zeros(1)
+        first = np.searchsorted(br, a, side="right") if self.breaks else np.zeros(a.size, int)
+        inside = (np.searchsorted(br, b, side="left") - first) if self.breaks else first
+        count = inside + 1
+        stretch = np.repeat(np.arange(a.size), count)
+        j = np.arange(stretch.size) - np.repeat(np.cumsum(count) - count, count)
+        k0 = first[stretch] + j
+        p = np.where(j == 0, a[stretch], br[np.clip(k0 - 1, 0, br.size - 1)])
+        q = np.where(j == inside[stretch], b[stretch], br[np.clip(k0, 0, br.size - 1)])
+        # each piece in k equal parts
+        k = np.full(p.size, 8) if not unit > 0 else \
+            np.clip(np.ceil((q - p) / unit), 1, 8).astype(int)
+        h = (q - p) / k
+        piece = np.repeat(np.arange(p.size), k)
+        m = np.arange(piece.size) - np.repeat(np.cumsum(k) - k, k)
+        starts, lengths = p[piece] + h[piece] * m, h[piece]
         u, w = _GL
         X = starts[:, None] + lengths[:, None] * (0.5 * (u[None, :] + 1.0))
-        piece = (0.5 * lengths) * (self.slope(X) @ w)
-        return np.bincount(np.array(owner, dtype=int), weights=piece, minlength=a.size)
+        part = (0.5 * lengths) * (self.slope(X) @ w)
+        return np.bincount(stretch[piece], weights=part, minlength=a.size)
 
     def rise_from(self, ref, X):
         """H(X) - H(ref) at each X (without ``height``: the rises between neighbouring
