@@ -26,6 +26,8 @@ _J_MIN, _J_MAX = -20 * _PER_DECADE, 20 * _PER_DECADE
 _PAST_FEATURES = 6
 #: ... and past the distance at which the face has risen by that distance.
 _PAST_RISE = 1
+#: Decades the scan samples in one call of the slope (one at a time where a call fails).
+_BLOCK = 8
 #: Gap samples a decade of distance outward from the zones (:meth:`Face.sample_points`).
 _GAP_PER_DECADE = 8
 #: Gap samples inside each gap between neighbouring zones (Chebyshev points).
@@ -212,12 +214,13 @@ class Face:
                 t.height, t.H_prev = self.height, H0
         with np.errstate(over="ignore", invalid="ignore"):
             while j <= _J_MAX and not all(t.done for t in state.values()):
-                r = 10.0 ** (np.arange(j, j + _PER_DECADE) / _PER_DECADE)
+                step = min(_BLOCK * _PER_DECADE, _J_MAX + _PER_DECADE - j)
+                r = 10.0 ** (np.arange(j, j + step) / _PER_DECADE)
                 r_feat = max([r_known] + [t.r_wrong for t in state.values()])
                 for t in state.values():
                     if not t.done:
                         t.extend(self.slope, c0, r, r_feat)
-                j += _PER_DECADE
+                j += step
         _scan_verdict(state, c0, self.extent)
         parts = [state[-1].samples(c0)] if -1 in state else []
         parts += [state[1].samples(c0)] if 1 in state else []
@@ -498,12 +501,18 @@ class _SideScan:
         return np.where(noise, np.nan, dH / dX)
 
     def extend(self, slope, c0, r, r_feat):
-        """One more decade of distances r (ascending); ``r_feat``: the outermost feature's
+        """More distances r (ascending, whole decades); ``r_feat``: the outermost feature's
         distance so far, over both sides."""
         try:
             s = self._secants(c0, r) if self.height is not None else \
                 np.asarray(slope(c0 + self.side * r), dtype=float)
         except ProfileCallableError as exc:
+            if r.size > _PER_DECADE:        # again a decade at a time: where does it fail?
+                for k in range(0, r.size, _PER_DECADE):
+                    if not self.done:
+                        self.extend(slope, c0, r[k:k + _PER_DECADE],
+                                    max(r_feat, self.r_wrong))
+                return
             # a slope that stops being finite (or raises) far out ends the scan where the
             # face has been seen to rise; anywhere else it is the user's to know about
             self.done = True
@@ -538,9 +547,13 @@ class _SideScan:
         return (self.rise_run is not None and r_end >= 10.0 ** _PAST_RISE * self.rise_run
                 and r_end >= 10.0 ** _PAST_FEATURES * max(r_feat, self.r_wrong))
 
+    def last_decade(self):
+        """The first distance of the outermost decade sampled."""
+        return self.r[-1][-1] / 10.0 ** ((_PER_DECADE - 1) / _PER_DECADE)
+
     def falling(self):
         """Whether the outermost decade sampled does not rise outward."""
-        return bool(self.r) and self.r_wrong >= self.r[-1][0]
+        return bool(self.r) and self.r_wrong >= self.last_decade()
 
     def samples(self, c0):
         if not self.r:
@@ -552,7 +565,7 @@ def _scan_verdict(state, c0, extent):
     """PunchGeometryError for a side that the scan leaves falling or flat, or whose slope
     failed before the face was seen to rise."""
     lo, hi = extent
-    flat = {side: t.falling() and t.r_moving < t.r[-1][0] for side, t in state.items()}
+    flat = {side: t.falling() and t.r_moving < t.last_decade() for side, t in state.items()}
     for side, t in state.items():
         if t.error is not None and (flat[side] or not t.falling()):
             raise t.error               # the slope failed where the face does not fall
