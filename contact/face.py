@@ -282,6 +282,18 @@ class Face:
             X = np.union1d(X, S[(S > a) & (S < b) & (np.abs(S - sc.c0) >= 1e-6 * (b - a))])
         return X
 
+    def _core(self, X):
+        """Mask of the points X within one :attr:`scale` of the face's features (all of X for
+        a face with two edges or a convex one), at least the sample nearest to them."""
+        lo, hi = self.extent
+        if self.convex or (math.isfinite(lo) and math.isfinite(hi)):
+            return np.ones(X.shape, dtype=bool)
+        f, s = self.scan().features, self.scale
+        core = (X >= f[0] - s) & (X <= f[-1] + s)
+        if not core.any():
+            core[int(np.argmin(np.abs(X - f[0])))] = True
+        return core
+
     def lowest_points(self, m=2001):
         """[(X, kind)]: the global minima of H on the face, each an interior point
         ("interior"), an edge ("left-edge", "right-edge") or a flat stretch ((c, d), "flat").
@@ -300,7 +312,9 @@ class Face:
         X = self._window_samples(m)
         m = X.size
         dH = self.slope(X)
-        top = max(float(np.max(np.abs(dH))), np.finfo(float).tiny)
+        # H' = 0 to rounding: relative to the slope's size near the face's features (over
+        # the whole window, a face that steepens fast -- 0.01 e^X -- would read as flat)
+        top = max(float(np.max(np.abs(dH[self._core(X)]))), np.finfo(float).tiny)
         zero = np.abs(dH) <= 1e-14 * top
         cands = []
         if math.isfinite(self.extent[0]) and (dH[0] > 0 or zero[0]) and not zero[:2].all():

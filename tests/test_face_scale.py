@@ -53,6 +53,10 @@ FACES = {
         height=lambda X: lam * _h(X / lam)), 0.05, [1e-3, 1.0, 1e3]),
     "slope, breaks": (lambda lam: contact.ProfilePunch(
         lambda X: _rounded_flat(X / lam), breaks=(-0.5 * lam, 0.5 * lam)), 0.3),
+    # a face that steepens fast from its one edge (its slope spans 20 decades over the
+    # window: read as flat there once)
+    "exponential, one edge": (lambda lam: contact.ProfilePunch(
+        lambda X: 0.01 * np.exp(X / lam), corners=(0.0, None)), 0.15),
     "W face, its extent": (lambda lam: contact.ProfilePunch(
         lambda X: _w(X / lam), face=(-2.0 * lam, 2.0 * lam)), 0.01),
     "samples": (_sampled, 0.2),
