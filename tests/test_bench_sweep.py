@@ -93,6 +93,7 @@ def test_processes_alone_count_what_each_solved():
     slow as the fastest."""
     with bench_sweep.processes_alone(bench_sweep.sweep_toml(30, 30), cases=300,
                                      seconds=0.2) as alone:
+        alone(1)        # (in a fresh clone the first reading was low: 2.8 times one for two)
         (one, spread1), (two, spread2) = alone(1), alone(2)
     assert spread1 == 1.0 and spread2 >= 1.0
     assert 0.0 < one < math.inf and 0.0 < two < 2.5 * one
