@@ -606,24 +606,16 @@ def _lowest_dip(piece, p, top):
     through three points, the spacing cut by 8 each time (a pressure that turns negative
     between the check points, as one zone just below the load where two merge, is found);
     inf where there is no such dip."""
+    def pressure(u):                # p at local points u of the zone
+        return (1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta * piece.phi_local(u)
+
     out = math.inf
     dips = np.flatnonzero((p[1:-1] <= p[:-2]) & (p[1:-1] <= p[2:]) & (p[1:-1] < 1e-2 * top)) + 1
     for k in dips.tolist():
         u0 = float(_CHECK_U[k])
         h = 0.5 * min(_CHECK_U[k - 1] - u0, u0 - _CHECK_U[k + 1])
-        for _ in range(6):
-            u = np.array([u0 - h, u0, u0 + h])
-            if not (-1.0 < u[0] and u[-1] < 1.0):
-                break
-            pm, p0, pp = (1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta * piece.phi_local(u)
-            out = min(out, pm, p0, pp)
-            curv = pp - 2.0 * p0 + pm
-            if curv > 0.0:
-                u0 += min(max(-0.5 * h * (pp - pm) / curv, -h), h)
-            h *= 0.125
-        u = np.array([u0])
-        out = min(out, float(((1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta
-                              * piece.phi_local(u))[0]))
+        u0, lowest = _parabola_minimum(pressure, u0, h, -1.0, 1.0, 6)
+        out = min(out, lowest, float(pressure(np.array([u0]))[0]))
     return out
 
 
@@ -871,18 +863,26 @@ def _min_pressure(sol, z):
     p = sol(X)
     top = max(float(np.max(np.abs(p))), np.finfo(float).tiny)
     k = int(np.argmin(np.where(_INNER, p, np.inf)))
-    x0 = float(X[k])
-    h = 0.5 * z.width * math.pi / 64
-    for _ in range(4):
+    x0, _ = _parabola_minimum(sol, float(X[k]), 0.5 * z.width * math.pi / 64, z.c, z.d, 4)
+    return float(sol(np.array([x0]))[0]) / top
+
+
+def _parabola_minimum(f, x0, h, lo, hi, steps):
+    """(x, lowest): a minimum of f near x0 polished by parabolas through f at x - h, x,
+    x + h (the vertex, a step of at most h), the spacing cut by 8 each time, ``steps``
+    times or until the three points leave (lo, hi); and the lowest value f took at them."""
+    lowest = math.inf
+    for _ in range(steps):
         pts = np.array([x0 - h, x0, x0 + h])
-        if pts[0] <= z.c or pts[-1] >= z.d:
+        if pts[0] <= lo or pts[-1] >= hi:
             break
-        pm, p0, pp = sol(pts)
+        pm, p0, pp = f(pts)
+        lowest = min(lowest, pm, p0, pp)
         curv = pp - 2.0 * p0 + pm
         if curv > 0.0:
             x0 += min(max(-0.5 * h * (pp - pm) / curv, -h), h)
         h *= 0.125
-    return float(sol(np.array([x0]))[0]) / top
+    return x0, lowest
 
 
 def _refine_event(face, eq, lo_state, new, kind, where, located, P):
