@@ -222,8 +222,11 @@ def _touch(face, eq, width=1e-3):
 def _growth_exponent(face, z, anchors, w):
     """e in load ~ size^e for a zone growing from ``anchors``: d + 1 for a slope that
     behaves like |X - x0|^d there (the face's ``homogeneous`` degree when it is stated about
-    that point, else measured from the slope at distances w and 2 w); None for a zone
-    without free ends."""
+    that point, else measured from the slope at distances w and 2 w), d + 1/2 for a zone
+    that grows from the ends of a flat stretch (there the flat's square-root pressure must be
+    cancelled: its factor, ~P, against the slope's, int_0^delta s^d / sqrt(delta - s) ds
+    ~ delta^(d + 1/2); Ciavarella et al. 1998 for the rounded flat punch, P ~ delta^(3/2));
+    None for a zone without free ends."""
     if z.left == CORNER and z.right == CORNER:
         return None
     h = face.homogeneous
@@ -240,13 +243,14 @@ def _growth_exponent(face, z, anchors, w):
         s1, s2 = (abs(float(v)) for v in face.slope(X))
         if s1 > 0.0 and s2 > 0.0:
             ds.append(min(max(math.log2(s2 / s1), 0.0), 6.0))
-    return (sum(ds) / len(ds) + 1.0) if ds else 2.0
+    grow = 0.5 if anchors[0] != anchors[1] else 1.0       # from a flat stretch's ends
+    return (sum(ds) / len(ds) + grow) if ds else 1.0 + grow
 
 
 # ------------------------------------------------------------------------------------------
 # the load curve
 # ------------------------------------------------------------------------------------------
-def follow_load(face, eq: ZoneEquations, loads):
+def follow_load(face, eq: ZoneEquations, loads, final_gap=True):
     """ZoneState at each load of ``loads`` (ascending), by continuation from first touch.
 
     Parameters
@@ -256,6 +260,11 @@ def follow_load(face, eq: ZoneEquations, loads):
         The equations (its ``load`` is replaced by each load).
     loads : sequence of float
         Ascending loads.
+    final_gap : bool
+        False: a step that lands on the last load directly checks p >= 0 but not the gap,
+        for a caller that checks the state it makes of it in full
+        (:func:`inspect_state`), and follows the load again with every check where that
+        fails (a gap check is most of the cost of a state on a face with breaks).
 
     Returns
     -------
@@ -265,7 +274,9 @@ def follow_load(face, eq: ZoneEquations, loads):
     """
     seed = _touch(face, eq)
     loads = [float(P) for P in loads]
-    state = _try_step(face, eq, seed, loads[0])         # straight to the first load
+    last = loads[-1] if not final_gap else None
+    state = _try_step(face, eq, seed, loads[0],         # straight to the first load
+                      gap=loads[0] != last)
     if state is None:
         # from a solution at the first-touch load (below it, the zones of first touch
         # shrink about the same points: the topology of first touch holds at any smaller load)
@@ -275,11 +286,21 @@ def follow_load(face, eq: ZoneEquations, loads):
             z, t = _predict(state, loads[0])
             _check_representable(z, loads[0])
             state = _solve_at(face, eq, z, t, loads[0], like=state)
-        state = _advance(face, eq, state, loads[0], direct=False)
+        state = _advance(face, eq, state, loads[0], direct=False, last=last)
     out = [state]
     for P in loads[1:]:
-        out.append(_advance(face, eq, out[-1], P))
+        out.append(_advance(face, eq, out[-1], P, last=last))
     return out
+
+
+def follow_last_again(face, eq, states, loads):
+    """The state at the last load reached again with every check, gap included (from the
+    state at the load before, or from first touch), with the events on the way: for a
+    caller of ``follow_load(..., final_gap=False)`` whose own check of the last state
+    failed."""
+    if len(states) > 1:
+        return _advance(face, eq, states[-2], loads[-1])
+    return follow_load(face, eq, loads[-1:])[0]
 
 
 def _check_representable(zones, P):
@@ -462,26 +483,28 @@ def _resolved(face, eq, state):
     return eq, state
 
 
-def _checked_resolved(face, eq, state):
+def _checked_resolved(face, eq, state, gap=True):
     """``state`` with its checks when it is valid, after n is raised to resolve it
-    (:func:`_resolved`; then checked again at that n), else None."""
-    checks = _inspect(face, eq, state)
+    (:func:`_resolved`; then checked again at that n), else None.  ``gap``: False checks
+    p >= 0 only (:func:`follow_load`'s ``final_gap``)."""
+    checks = _inspect(face, eq, state, gap)
     if not checks.ok:
         return None
     eq2, solved = _resolved(face, eq, state)
     if solved is None:
         return None
     if solved is not state:
-        checks = _inspect(face, eq2, solved)
+        checks = _inspect(face, eq2, solved, gap)
         if not checks.ok:
             return None
     return _with(solved, _checks=checks)
 
 
-def _advance(face, eq, state, P, direct=True):
+def _advance(face, eq, state, P, direct=True, last=None):
     """From ``state`` to load P, stepping and handling events; the returned state carries
     the events located on the way.  ``direct``: try one step to P first.  n follows the
-    states' needs (:func:`_resolved`)."""
+    states' needs (:func:`_resolved`).  A step that lands on the load ``last`` does not
+    check the gap (:func:`follow_load`'s ``final_gap``)."""
     if state.load == P:
         return _with(state, events=())
     if state.solution is not None:
@@ -489,14 +512,15 @@ def _advance(face, eq, state, P, direct=True):
     events = []
     tried = None
     if state.load < P and direct:
-        new = _try_step(face, eq, state, P)         # one step when the topology holds
+        new = _try_step(face, eq, state, P, gap=P != last)   # one step if the topology holds
         if new is not None:
             return _with(new, events=())
         tried = P
     growth = _GROWTH
     while state.load < P:
         target = min(P, state._origin + (state.load - state._origin) * growth)
-        new = _try_step(face, eq, state, target) if target != tried else None
+        new = _try_step(face, eq, state, target, gap=target != last) \
+            if target != tried else None
         tried = None
         if new is None:
             new, found = _cross_event(face, eq, state, target)
@@ -509,10 +533,11 @@ def _advance(face, eq, state, P, direct=True):
     return _with(state, events=tuple(events))
 
 
-def _try_step(face, eq, state, P, retry=True):
+def _try_step(face, eq, state, P, retry=True, gap=True):
     """The state at load P from ``state`` if the zone topology holds there (Newton converges,
     no end beyond the face, gaps open, no penetration), else None.  Newton starts from the
-    Jacobian of ``state``, and again from a fresh one if that fails (``retry``)."""
+    Jacobian of ``state``, and again from a fresh one if that fails (``retry``).  ``gap``:
+    False leaves the gap unchecked (:func:`follow_load`'s ``final_gap``)."""
     zones, totals = _predict(state, P, face, eq)
     lo, hi = face.extent
     zones = _clip(zones, lo, hi)
@@ -534,7 +559,7 @@ def _try_step(face, eq, state, P, retry=True):
                             budget=budget)
         except ContactLossError:
             continue
-        checked = _checked_resolved(face, eq, new)
+        checked = _checked_resolved(face, eq, new, gap)
         if checked is not None:
             return checked
     return None
@@ -550,11 +575,12 @@ def _clip(zones, lo, hi):
 # ------------------------------------------------------------------------------------------
 # validity
 # ------------------------------------------------------------------------------------------
-def _inspect(face, eq, state):
+def _inspect(face, eq, state, gap=True):
     """The checks of a state: p >= 0 in every zone (at 64 Chebyshev points of each), the
     gap >= 0 outside the zones (400 samples of the face, and the bottom of each of its own
     valleys, :meth:`contact.face.Face.dips`; skipped for one zone on a convex face, where it
-    opens by itself), each to the resolution of the solution (:func:`_resolution`)."""
+    opens by itself, :attr:`contact.face.Face.opens_by_itself`, and where ``gap`` is False),
+    each to the resolution of the solution (:func:`_resolution`)."""
     sol = state.solution
     tol = _resolution(sol)
     ok = True
@@ -569,7 +595,7 @@ def _inspect(face, eq, state):
         p_inner.append(float(p[k]) / top)
         p_where.append(float(X[k]))
     valley = valley_where = None
-    if not (face.convex and len(state.zones) == 1):
+    if gap and not (len(state.zones) == 1 and face.opens_by_itself):
         g, X, gd, Xd = _gap_samples(face, eq, state)
         if g.size:
             rise = face.rise_scale(state)
@@ -673,10 +699,14 @@ def _check_weight(alpha, beta):
 def _resolution(sol):
     """What the checks forgive: 1e-9, or the size of the last two Jacobi coefficients
     relative to the largest (times 10) when n does not resolve p (a kink without breaks at a
-    small n: wiggles of that size are truncation, not a lost contact).  Kept for the last
-    few solutions (immutable, hashed by identity): a state is checked, then tested for its
-    resolution."""
-    return max([1e-9] + [float(series_tail(piece.coefficients)) for piece in sol.pieces])
+    small n: wiggles of that size are truncation, not a lost contact).  A zone with breaks
+    inside forgives only 1e-9: its series is the projection of a kinked slope, whose tail
+    falls slowly at any n, and p is that series plus the pointwise correction that carries
+    the kinks (:attr:`sie.solution.IntervalSolution.has_breaks`), exact to the quadrature.
+    Kept for the last few solutions (immutable, hashed by identity): a state is checked,
+    then tested for its resolution."""
+    return max([1e-9] + [float(series_tail(piece.coefficients)) for piece in sol.pieces
+                         if not piece.has_breaks])
 
 
 def series_tail(C):

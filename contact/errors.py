@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from sie.errors import check_finite_real
+from sie.errors import check_finite_real, describe_value, is_number, real_array
 
 __all__ = [
     "ContactInputError",
@@ -283,31 +283,6 @@ def check_finite(name: str, value, error=ContactInputError) -> float:
     return check_finite_real(name, value, error)
 
 
-def is_number(value) -> bool:
-    """Whether ``value`` is a real number: an int or a float (Python's or numpy's, a 0-d
-    numeric array), or another object that converts itself to a float (``Fraction``,
-    ``Decimal``).  Text is not, though ``float`` would parse it (``"0.5"``, numpy's ``str_``,
-    an array of strings), nor a bool, nor a complex number."""
-    if isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
-        return False
-    if isinstance(value, (np.ndarray, np.generic)):
-        return value.dtype.kind in "iuf"
-    return hasattr(value, "__float__") or hasattr(value, "__index__")
-
-
-def _what(value) -> str:
-    """A value refused as a number and its type, for the message: ``'0.5' (a str, not a
-    real number)``."""
-    if isinstance(value, np.generic):
-        value = value.item()                # np.str_('0.5') reads as '0.5'
-    if isinstance(value, np.ndarray):
-        kind = f"an array of {value.dtype}"
-    else:
-        kind = type(value).__name__
-        kind = f"{'an' if kind[0] in 'aeiou' else 'a'} {kind}"
-    return f"{value!r} ({kind}, not a real number)"
-
-
 def check_number(name: str, value, error=ContactInputError,
                  allowed: str = "a finite real number") -> None:
     """Raise ``error`` naming ``name``, what was given and that ``allowed`` (a number) is
@@ -318,29 +293,6 @@ def check_number(name: str, value, error=ContactInputError,
     ``Orthotropic(C11="159")`` or ``load="0.01"`` fail where given, and numpy's numeric
     scalars (``np.float64``, ``np.int64``) are numbers."""
     if not is_number(value):
-        raise error(f"{name} must be {allowed}, got {_what(value)}")
+        raise error(f"{name} must be {allowed}, got {describe_value(value)}")
 
 
-def real_array(name: str, values, error=ContactInputError,
-               allowed: str = "real numbers") -> np.ndarray:
-    """``values`` (a number or a sequence of them) as a float array, or ``error`` naming
-    ``name`` and the first entry that is not a real number (:func:`is_number`: text, a bool,
-    a complex number), or saying that ``values`` is ragged.  Finiteness is the caller's to
-    check."""
-    try:
-        arr = np.asarray(values)
-    except (TypeError, ValueError) as exc:          # ragged
-        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
-            from None
-    if arr.dtype.kind in "iuf":
-        return arr.astype(float, copy=False)
-    entries = arr if isinstance(values, np.ndarray) else np.asarray(values, dtype=object)
-    bad = next((v for v in entries.flat if not is_number(v)), None)
-    if bad is not None:
-        among = "" if arr.ndim == 0 else f" among {values!r}"
-        raise error(f"{name} must be {allowed}, got {_what(bad)}{among}")
-    try:
-        return arr.astype(float)
-    except (TypeError, ValueError) as exc:          # numbers nested in sequences
-        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
-            from None

@@ -117,6 +117,9 @@ class Face:
                                                              float(homogeneous[1]))
         self._dips = None
         self._scan = None
+        self._opens = None
+        self._lowest = {}           # m -> lowest_points(m)
+        self._grid = None           # (key, X, rises between neighbours or None): see _base_samples
         # the slope is a finite difference of the height, whose step follows the scale: the
         # scan reads the height itself
         self.slope_from_height = bool(slope_from_height) and height is not None
@@ -168,7 +171,7 @@ class Face:
         if self.height is not None:
             return self.height(X) - float(self.height(np.array([ref]))[0])
         pts, inv = np.unique(np.concatenate([[float(ref)], X.ravel()]), return_inverse=True)
-        steps = self._rises(pts[:-1], pts[1:]) if pts.size > 1 else np.zeros(0)
+        steps = self._steps(pts)
         # summed outward from ref on each side: a point near ref does not carry the rounding
         # of the (possibly far larger) rises beyond it
         k = int(inv[0])
@@ -176,6 +179,27 @@ class Face:
         H[k + 1:] = np.cumsum(steps[k:])
         H[:k] = -np.cumsum(steps[:k][::-1])[::-1]
         return H[inv[1:]].reshape(X.shape)
+
+    def _steps(self, pts):
+        """H(pts[i+1]) - H(pts[i]) for ascending pts: from the rises between neighbours of
+        the face's own sample grid (:meth:`_base_samples`, integrated once) where both
+        points are neighbours on it, else by :meth:`_rises`."""
+        if pts.size < 2:
+            return np.zeros(0)
+        a, b = pts[:-1], pts[1:]
+        if self._grid is None:
+            return self._rises(a, b)
+        key, G, S = self._grid
+        if S is None:
+            S = self._rises(G[:-1], G[1:])
+            self._grid = (key, G, S)
+        i = np.minimum(np.searchsorted(G, a), G.size - 2)
+        known = (G[i] == a) & (G[i + 1] == b)
+        steps = np.empty(a.size)
+        steps[known] = S[i[known]]
+        if not known.all():
+            steps[~known] = self._rises(a[~known], b[~known])
+        return steps
 
     # -- the face's own scale -------------------------------------------------------------
     def scan(self):
@@ -304,7 +328,13 @@ class Face:
         the lowest of them (within 1e-9 of the range of H over them) are returned.  A convex
         face stated homogeneous about x0 (``homogeneous``) is lowest at x0, or at the edge
         next to it, and a convex face with a zero slope at both its ends is flat, without a
-        search."""
+        search.  Computed once per face and m."""
+        found = self._lowest.get(m)
+        if found is None:
+            found = self._lowest[m] = tuple(self._lowest_points(m))
+        return list(found)
+
+    def _lowest_points(self, m):
         known = self._convex_lowest()
         if known is not None:
             return known
@@ -443,6 +473,34 @@ class Face:
             self._dips = np.array(sorted(out))
         return self._dips
 
+    @property
+    def opens_by_itself(self):
+        """Whether one zone's gap opens by itself: the face is convex, stated by the punch
+        (:attr:`convex`) or read from its slope, nondecreasing (to 1e-12 of its largest
+        value in the search window) at the samples :meth:`dips` reads (20 times finer than
+        the gap's), the scan's outside the window, and both sides of each break.  The gap is
+        then not sampled for one zone (:func:`contact.continuation._inspect`): a slope that
+        falls between these samples would have to fall between the gap's too.  Computed
+        once per face."""
+        if self._opens is None:
+            self._opens = self.convex or self._convex_at_samples()
+        return self._opens
+
+    def _convex_at_samples(self):
+        a, b = self.search_window()
+        X = self._window_samples(_DIP_SAMPLES)
+        lo, hi = self.extent
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            X = np.union1d(X, self.scan().X)
+        # each break's two sides, where a slope that jumps down shows it
+        for x in self.breaks:
+            h = 1e-9 * max(abs(x), b - a)
+            X = np.union1d(X, [x - h, x + h])
+        X = X[(X >= lo) & (X <= hi)]
+        s = np.asarray(self.slope(X), dtype=float)
+        top = float(np.max(np.abs(s[(X >= a) & (X <= b)]), initial=0.0))
+        return bool(np.all(np.diff(s) >= -1e-12 * top))
+
     def sample_points(self, zones, m):
         """The points outside the zones where the gap is checked, ascending: m samples of
         the search window and the zones; :data:`_GAP_INNER` Chebyshev points inside each gap
@@ -455,13 +513,28 @@ class Face:
         a, b = self.search_window()
         c1, dJ = zones[0].c, zones[-1].d
         a, b = min(a, c1), max(b, dJ)
-        parts = [np.linspace(a, b, m)]
+        X = self._base_samples(a, b, m)
         # (where the evenly spaced samples suffice they are left alone: the gap's valleys are
         # located by parabolas through them)
         u = np.cos(np.pi * (np.arange(_GAP_INNER) + 0.5) / _GAP_INNER)
+        parts = [X]
         for z0, z1 in zip(zones[:-1], zones[1:]):
             if z1.c - z0.d < _GAP_INNER * (b - a) / (m - 1):
                 parts.append(0.5 * (z0.d + z1.c) + 0.5 * (z1.c - z0.d) * u)
+        if len(parts) > 1:
+            X = np.unique(np.concatenate(parts))
+        return X[outside(zones, X)]
+
+    def _base_samples(self, a, b, m):
+        """m samples of [a, b], and outward from it :data:`_GAP_PER_DECADE` a decade of
+        distance from the samples' spacing out to the edge, or on a side without one to the
+        reach of the face's :meth:`scan`; ascending.  Kept for the last (a, b, m) asked (the
+        search window, for every state whose zones lie inside it), with the face's rises
+        between neighbours once they are needed (:meth:`_steps`)."""
+        key = (a, b, m)
+        if self._grid is not None and self._grid[0] == key:
+            return self._grid[1]
+        parts = [np.linspace(a, b, m)]
         lo, hi = self.extent
         reach = self.scan().reach if not self.convex else (a, b)
         for side, end, far in ((-1.0, a, max(lo, reach[0])), (1.0, b, min(hi, reach[1]))):
@@ -472,7 +545,9 @@ class Face:
                 d = np.minimum(near * 10.0 ** (np.arange(1, k + 1) / _GAP_PER_DECADE), dist)
                 parts.append(end + side * d)
         X = np.unique(np.concatenate(parts))
-        return X[outside(zones, X)]
+        X.flags.writeable = False
+        self._grid = (key, X, None)
+        return X
 
     def rise_scale(self, state):
         X = np.concatenate([z.c + z.width * np.linspace(0.0, 1.0, 9) for z in state.zones])

@@ -30,7 +30,7 @@ from sie.assembly import N_MAX_DENSE
 from sie.exponents import MIN_B_OVER_A, check_coefficients
 
 from .constants import SurfaceConstants, surface_constants
-from .continuation import ZoneState, follow_load, inspect_state
+from .continuation import ZoneState, follow_last_again, follow_load, inspect_state
 from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
                      check_finite, real_array)
@@ -561,21 +561,31 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, mate
     eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
                        b=const.N11, load=loads[0], n=n_use,
                        n_max=_N_FOLLOW if adaptive else None)
-    states = follow_load(face, eq, loads)
+    # adaptive: each state is refined and then checked in full (inspect_state below), so the
+    # step that lands on the last load leaves the gap to that check
+    states = follow_load(face, eq, loads, final_gap=not adaptive)
     results, events = [], []
     n_start = eq.n
-    for state in states:
-        events.extend(state.events)
+    for i, state in enumerate(states):
         if adaptive:
             # a load curve starts each load's doubling at half the n the previous one needed
             refined = _refine(face, eq, state, tol, punch, n_start)
+            if i == len(states) - 1 and not inspect_state(face, eq, refined):
+                # the step to the last load did not check the gap: to that load again with
+                # every check (and the events on the way), from the load before or from
+                # first touch
+                state = follow_last_again(face, eq, states, loads)
+                refined = _refine(face, eq, state, tol, punch, n_start)
             if not inspect_state(face, eq, refined):
                 # the continuation's state passed its checks at a smaller n, within that n's
                 # truncation; at the refined n it violates p >= 0 or the gap: follow the
                 # load again at that n (its checks are then as tight as the answer)
                 refined = _refollow(face, eq, refined, loads, len(results), tol, punch)
+            events.extend(state.events)
             state = refined
             n_start = max(eq.n, _basis_size(state) // 2)
+        else:
+            events.extend(state.events)
         sol = state.solution
         zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
         integral = sum(z.load for z in zones)

@@ -173,10 +173,7 @@ class ZoneEquations:
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
         left, right = _SIE_END[z.left], _SIE_END[z.right]
         f = lambda u: self.slope(m + h * u)      # noqa: E731
-        if br:
-            return sie.dominant_functionals(f, a=self.a, b=self.b, n=self.n, left=left,
-                                            right=right, breaks=br)
-        return _functionals_rule(self.a, self.b, self.n, left, right)(f)   # prepared once
+        return _functionals_rule(self.a, self.b, self.n, left, right)(f, br)   # prepared once
 
     def _raw_one_zone(self, z):
         fun = self._functionals(z)
@@ -351,7 +348,7 @@ class _Budgeted:
 
 @functools.lru_cache(maxsize=64)
 def _functionals_rule(a, b, n, left, right):
-    """sie.FunctionalsRule for one zone without breaks, prepared once per equation."""
+    """sie.FunctionalsRule for one zone, prepared once per equation."""
     return sie.FunctionalsRule(a=a, b=b, n=n, left=left, right=right)
 
 

@@ -301,10 +301,13 @@ class ResidualWarning(SIEWarning):
 
 
 def check_finite_real(name: str, value, error=SIEInputError) -> float:
-    """Return ``value`` as a float or raise ``error`` naming ``name``."""
+    """Return ``value`` as a float or raise ``error`` naming ``name``: a real number
+    (:func:`is_number`: not text, which ``float`` would parse, nor a bool), finite."""
+    if not is_number(value):
+        raise error(f"{name} must be a finite real number, got {describe_value(value)}")
     try:
         v = float(value)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise error(f"{name} must be a finite real number, got {value!r}") from None
     if not math.isfinite(v):
         raise error(f"{name} must be a finite real number, got {v!r}")
@@ -375,3 +378,52 @@ def call_checked(fn, name, args, shape):
         where = tuple(float(np.ravel(a)[bad]) for a in args)
         raise CallableOutputError(f"{name} returned a non-finite value at {where}")
     return out
+
+def is_number(value) -> bool:
+    """Whether ``value`` is a real number: an int or a float (Python's or numpy's, a 0-d
+    numeric array), or another object that converts itself to a float (``Fraction``,
+    ``Decimal``).  Text is not, though ``float`` would parse it (``"0.5"``, numpy's ``str_``,
+    an array of strings), nor a bool, nor a complex number."""
+    if isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
+        return False
+    if isinstance(value, (np.ndarray, np.generic)):
+        return value.dtype.kind in "iuf"
+    return hasattr(value, "__float__") or hasattr(value, "__index__")
+
+
+def describe_value(value) -> str:
+    """A value refused as a number and its type, for the message: ``'0.5' (a str, not a
+    real number)``."""
+    if isinstance(value, np.generic):
+        value = value.item()                # np.str_('0.5') reads as '0.5'
+    if isinstance(value, np.ndarray):
+        kind = f"an array of {value.dtype}"
+    else:
+        kind = type(value).__name__
+        kind = f"{'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+    return f"{value!r} ({kind}, not a real number)"
+
+
+def real_array(name: str, values, error=SIEInputError,
+               allowed: str = "real numbers") -> np.ndarray:
+    """``values`` (a number or a sequence of them) as a float array, or ``error`` naming
+    ``name`` and the first entry that is not a real number (:func:`is_number`: text, a bool,
+    a complex number), or saying that ``values`` is ragged.  Finiteness is the caller's to
+    check."""
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError) as exc:          # ragged
+        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
+            from None
+    if arr.dtype.kind in "iuf":
+        return arr.astype(float, copy=False)
+    entries = arr if isinstance(values, np.ndarray) else np.asarray(values, dtype=object)
+    bad = next((v for v in entries.flat if not is_number(v)), None)
+    if bad is not None:
+        among = "" if arr.ndim == 0 else f" among {values!r}"
+        raise error(f"{name} must be {allowed}, got {describe_value(bad)}{among}")
+    try:
+        return arr.astype(float)
+    except (TypeError, ValueError) as exc:          # numbers nested in sequences
+        raise error(f"{name} must be {allowed} (an array of them), got {values!r}: {exc}") \
+            from None

@@ -6,7 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import InvalidBreakpointError, InvalidIntervalError, PerIntervalArgumentError
+from .errors import (InvalidBreakpointError, InvalidIntervalError, PerIntervalArgumentError,
+                     describe_value, is_number, real_array)
 
 __all__ = ["Interval", "check_intervals", "per_interval", "split_breaks"]
 
@@ -72,9 +73,14 @@ def check_intervals(intervals):
     for j, p in enumerate(pairs):
         if len(p) != 2:
             raise InvalidIntervalError(f"intervals[{j}] must be a pair (c, d), got {p!r}")
+        if not (is_number(p[0]) and is_number(p[1])):
+            bad = p[0] if not is_number(p[0]) else p[1]
+            raise InvalidIntervalError(
+                f"intervals[{j}] must hold two real numbers, got {describe_value(bad)} in "
+                f"{p!r}")
         try:
             c, d = float(p[0]), float(p[1])
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             raise InvalidIntervalError(
                 f"intervals[{j}] must hold two real numbers, got {p!r}") from None
         if not (math.isfinite(c) and math.isfinite(d)):
@@ -111,10 +117,7 @@ def split_breaks(breaks, intervals):
     Each break must lie strictly inside one interval."""
     if isinstance(breaks, (tuple, list)) and len(breaks) == 0:
         return [np.empty(0) for _ in intervals]
-    try:
-        br = np.asarray(breaks, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidBreakpointError(f"breaks must be real numbers, got {breaks!r}") from None
+    br = real_array("breaks", breaks, InvalidBreakpointError).ravel()
     if not np.all(np.isfinite(br)):
         raise InvalidBreakpointError(f"breaks must be finite, got {br.tolist()}")
     out = [[] for _ in intervals]

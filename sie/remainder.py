@@ -146,13 +146,17 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details
         ps.append(np.full(x.size, i))
         oms.append(one_minus)
         ops.append(one_plus)
-    x, w = np.concatenate(xs), np.concatenate(ws)
-    piece = np.concatenate(ps)
-    order = np.lexsort((x, piece))               # by piece, then by node: ascending
+    # ascending: by piece (the end pieces are the first and the last), each piece's Gauss
+    # nodes ascending
+    ends = np.flatnonzero((los == -1.0) | (his == 1.0))
+    order = [len(xs) - ends.size + k for k, i in enumerate(ends) if i == 0]
+    order += [0] if inner.size else []
+    order += [len(xs) - ends.size + k for k, i in enumerate(ends) if i != 0]
+    x, w = np.concatenate([xs[k] for k in order]), np.concatenate([ws[k] for k in order])
     if not details:
-        return x[order], w[order]
-    return (x[order], w[order], piece[order], np.concatenate(oms)[order],
-            np.concatenate(ops)[order])
+        return x, w
+    return (x, w, np.concatenate([ps[k] for k in order]),
+            np.concatenate([oms[k] for k in order]), np.concatenate([ops[k] for k in order]))
 
 
 def _nearest_distance(nodes, x):
@@ -381,10 +385,9 @@ class InversionRemainder:
     rules: list                 # [(s, ws, r_s)] for weight 1/w
     g_coef: np.ndarray          # projections g_m of g = f - other
     const: float = 0.0
-    w_rule: tuple = ()
-    w_panels: tuple = ()                # (lo, hi, counts) of the pieces of w_rule
-    w_ends: tuple = ()                  # per node of w_rule: its piece, 1 - t, 1 + t (exact)
     q: int = 0                          # nodes per piece between breaks of the 1/w rules
+    _w_mesh: np.ndarray | None = None   # the graded mesh of w_rule (made on first use)
+    _w: tuple | None = None             # (w_rule, w_panels, w_ends)
     breaks: np.ndarray = field(default_factory=lambda: np.empty(0))
     _wphi: np.ndarray | None = None     # w_rule weights times delta_phi at its nodes
     _phi_w: np.ndarray | None = None    # delta_phi at the nodes of w_rule
@@ -412,18 +415,7 @@ class InversionRemainder:
             nodes, weights = _graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
             fvals = call_checked(f, "f", (nodes,), nodes.shape)
             self.rules.append((nodes, weights, self._r(nodes, fvals)))
-        # rule for integrals against w: delta_phi behaves like (x - c) log|x - c| at a break c,
-        # so the pieces are graded geometrically toward each break (hp quadrature; without
-        # grading int psi converged only like n^-3: 2e-8 at n = 192)
-        # also graded toward +-1: the Cauchy transform at x just outside an end sums this
-        # rule where it resolves the pole (at x = 1.001 an ungraded rule loses 5e-8 at
-        # n = 48), and so does the log potential outside the interval
-        w_pts = np.union1d(pts, _end_grading(breaks))
-        tw, ww, piece_w, om_w, op_w = _graded_rule(max(q, 24), alpha, beta, breaks, w_pts,
-                                                   _Q_SMALL + 2, details=True)
-        self.w_rule = (tw, ww)
-        self.w_ends = (piece_w, om_w, op_w)
-        self.w_panels = _panels(max(q, 24), breaks, w_pts, _Q_SMALL + 2)
+        self._w_mesh = pts          # the rule for integrals against w: see w_rule
         self.q = q
         self.breaks = breaks
         if piece.kappa == 1:
@@ -431,6 +423,38 @@ class InversionRemainder:
             self.const = -float(ww @ self._phi_no_const(tw)) / jacobi_moment_shifted(
                 piece.exp.alpha_p1, piece.exp.beta_p1)
         return self
+
+    @property
+    def w_rule(self):
+        """(nodes, weights) of the rule for integrals against w, made on first use (phi at
+        points needs only the 1/w rules): graded toward the breaks and toward +-1."""
+        return self._w_parts()[0]
+
+    @property
+    def w_panels(self):
+        """(lo, hi, counts) of the pieces of :attr:`w_rule`."""
+        return self._w_parts()[1]
+
+    @property
+    def w_ends(self):
+        """Per node of :attr:`w_rule`: its piece, 1 - t and 1 + t (exact)."""
+        return self._w_parts()[2]
+
+    def _w_parts(self):
+        # delta_phi behaves like (x - c) log|x - c| at a break c, so the pieces are graded
+        # geometrically toward each break (hp quadrature; without grading int psi converged
+        # only like n^-3: 2e-8 at n = 192); also graded toward +-1: the Cauchy transform at x
+        # just outside an end sums this rule where it resolves the pole (at x = 1.001 an
+        # ungraded rule loses 5e-8 at n = 48), and so does the log potential outside
+        if self._w is None:
+            breaks, q = self.breaks, max(self.q, 24)
+            w_pts = np.union1d(self._w_mesh, _end_grading(breaks))
+            tw, ww, piece_w, om_w, op_w = _graded_rule(q, self.sol.alpha, self.sol.beta,
+                                                       breaks, w_pts, _Q_SMALL + 2,
+                                                       details=True)
+            self._w = ((tw, ww), _panels(q, breaks, w_pts, _Q_SMALL + 2),
+                       (piece_w, om_w, op_w))
+        return self._w
 
     # g - Pi g at points x, given f(x)
     def _r(self, x, fx):

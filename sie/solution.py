@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .cauchy import cauchy_series, evaluation_points, log_potential_series
-from .errors import EvaluationPointError
+from .errors import EvaluationPointError, real_array
 from .exponents import Exponents
 from .intervals import Interval
 from .jacobi import jacobi_series
@@ -179,6 +179,13 @@ class IntervalSolution:
     def weight_data(self):
         from .cauchy import Weight
         return Weight.from_exponents(self.exp)
+
+    @property
+    def has_breaks(self) -> bool:
+        """Whether f has breaks inside the interval: phi is then the series plus the
+        pointwise correction (:attr:`remainder`), and the series' tail does not measure
+        phi's error (the correction carries the kinks)."""
+        return self._remainder_factory is not None
 
     @functools.cached_property
     def remainder(self):
@@ -375,10 +382,7 @@ class Solution:
         if s.dtype.kind == "c":
             raise EvaluationPointError(
                 f"{name} must be real (this quantity is defined on the real line); got complex")
-        try:
-            s = s.astype(float)
-        except (TypeError, ValueError):
-            raise EvaluationPointError(f"{name} must be real numbers, got {s.dtype}") from None
+        s = real_array(name, s, EvaluationPointError)
         if not np.all(np.isfinite(s)):
             raise EvaluationPointError(f"{name} must be finite real numbers")
         return s

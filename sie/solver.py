@@ -30,14 +30,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from .assembly import assemble_and_solve, operator_images, probe_kernel
-from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidOrderError,
-                     ResidualWarning, SideConditionError, call_checked, check_finite_real,
-                     check_order)
+from .errors import (CallableOutputError, InconsistentEquationWarning,
+                     InvalidBreakpointError, InvalidOrderError, ResidualWarning,
+                     SideConditionError, call_checked, check_finite_real, check_order,
+                     real_array)
 from .exponents import Exponents, check_coefficients, check_end, exponents_of
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
-from .unknowns import IntervalUnknown
+from .quadrature import composite_rule
+from .unknowns import _EXTRA_PER_PIECE, IntervalUnknown
 
 __all__ = ["solve", "Solution", "Exponents", "dominant_functionals", "Functionals",
            "FunctionalsRule", "N_MAX"]
@@ -489,12 +491,15 @@ def dominant_functionals(f, *, a, b, n, left, right, breaks=()):
 
 
 class FunctionalsRule:
-    """:func:`dominant_functionals` prepared once for fixed a, b, n and ends (no breaks).
+    """:func:`dominant_functionals` prepared once for fixed a, b, n and ends.
 
     The Gauss rule, the norms and the end correction are built here; each call then costs
     one evaluation of f at the fixed nodes and two dot products.  For searches that try
     many right-hand sides of one equation (free contact ends).  ``rule(f)`` returns the same
-    :class:`Functionals` as ``dominant_functionals(f, a=..., b=..., n=..., left=..., right=...)``.
+    :class:`Functionals` as ``dominant_functionals(f, a=..., b=..., n=..., left=..., right=...)``
+    and ``rule(f, breaks=br)`` those of ``dominant_functionals(..., breaks=br)`` (the
+    composite rule of the pieces between the breaks, which move with the interval in a
+    search, is formed per call from cached Gauss-Jacobi rules).
 
     Parameters
     ----------
@@ -540,6 +545,8 @@ class FunctionalsRule:
         if u is None:
             return
         rule, h = u.rule, u.norms
+        self._h = h
+        self._q_pieces = u.m_eq + _EXTRA_PER_PIECE        # nodes per piece, as solve's
         x = rule.x
         p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)   # P_1^{(-alpha,-beta)}
         p_end = rule.end_values(2) if rule.end else np.zeros(2)
@@ -549,11 +556,13 @@ class FunctionalsRule:
         self._w_end = (rule.corr * p_end[0] / h[0], rule.corr * p_end[1] / h[1])
         self._scale = u.mu0 / u.lam
 
-    def __call__(self, f) -> Functionals:
+    def __call__(self, f, breaks=()) -> Functionals:
         e = self.exponents
         if self.kappa == 1:
             return Functionals(None, None, e.alpha, e.beta, 1)
         _check_callable("f", f, "vectorised callable f(s)")
+        if len(breaks):
+            return self._with_breaks(f, _unit_breaks(breaks))
         fs = call_checked(f, "f", (self.nodes,), self.nodes.shape)
         f_end = 0.0
         if self.end:
@@ -563,3 +572,25 @@ class FunctionalsRule:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
         f1 = float(self._w[1] @ fs + self._w_end[1] * f_end)
         return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
+
+    def _with_breaks(self, f, br):
+        e = self.exponents
+        x, w = composite_rule(self._q_pieces, -e.alpha, -e.beta, br)
+        fs = call_checked(f, "f", (x,), x.shape)
+        wf = w * fs
+        f0 = float(np.sum(wf)) / self._h[0]
+        if self.kappa == 0:
+            return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
+        p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)
+        f1 = float(wf @ p1) / self._h[1]
+        return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
+
+
+def _unit_breaks(breaks):
+    """Breaks inside (-1, 1), ascending and distinct; InvalidBreakpointError otherwise."""
+    br = real_array("breaks", breaks, InvalidBreakpointError).ravel()
+    if not (np.all(np.isfinite(br)) and np.all(np.abs(br) < 1.0)):
+        raise InvalidBreakpointError(
+            f"breaks must be finite and lie strictly inside (-1, 1), got {br.tolist()}")
+    br = np.sort(br)
+    return br[np.concatenate(([True], np.diff(br) > 0.0))]

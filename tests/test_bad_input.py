@@ -254,7 +254,36 @@ def _result_cases():
     ]
 
 
-@pytest.mark.parametrize("what, call, error, given", _cases(), ids=[c[0] for c in _cases()])
+def _sie_cases():
+    """The same for sie: every number of an equation and every point of a solution."""
+    import sie
+    kw = dict(a=0.3, b=1.0, n=8, left="bounded", right="singular")
+
+    def solve(**over):
+        return sie.solve(np.cos, **{**kw, **over})
+    sol = solve()
+    return [
+        ("sie a", lambda: solve(a="0.3"), sie.InvalidCoefficientError, "'0.3'"),
+        ("sie b", lambda: solve(b="1"), sie.InvalidCoefficientError, "'1'"),
+        ("sie a bool", lambda: solve(a=True), sie.InvalidCoefficientError, "True"),
+        ("sie total", lambda: solve(left="singular", total="1"), sie.SideConditionError, "'1'"),
+        ("sie intervals", lambda: solve(intervals=[("-1", 1.0)]), sie.InvalidIntervalError,
+         "'-1'"),
+        ("sie breaks", lambda: solve(breaks=["0.1"]), sie.InvalidBreakpointError, "'0.1'"),
+        ("sie functionals a", lambda: sie.dominant_functionals(np.cos, **{**kw, "a": "0.3"}),
+         sie.InvalidCoefficientError, "'0.3'"),
+        ("sie FunctionalsRule breaks", lambda: sie.FunctionalsRule(**kw)(np.cos, ["0.1"]),
+         sie.InvalidBreakpointError, "'0.1'"),
+        ("sie solution point", lambda: sol("0.2"), sie.EvaluationPointError, "'0.2'"),
+        ("sie log_potential point", lambda: sol.log_potential(["0.2"]),
+         sie.EvaluationPointError, "'0.2'"),
+        ("sie gauss_jacobi", lambda: sie.gauss_jacobi(8, "0.5", 0.0), sie.InvalidExponentError,
+         "'0.5'"),
+    ]
+
+
+@pytest.mark.parametrize("what, call, error, given", _cases() + _sie_cases(),
+                         ids=[c[0] for c in _cases() + _sie_cases()])
 def test_a_number_given_as_text_or_bool_is_refused(what, call, error, given):
     with pytest.raises(error) as info:
         call()

@@ -268,22 +268,28 @@ def test_sie_solve_without_the_residual_check():
 
 def test_refined_state_failing_its_checks_is_followed_again(monkeypatch):
     """A refined state that fails p >= 0 or the gap at its n is not returned: the load is
-    followed again at that n (checks as tight as the answer) and that state is returned."""
+    followed again with every check (the step that landed on it left its gap unchecked);
+    where the state refined from that fails too, the load is followed again at the refined
+    n (checks as tight as the answer) and that state is returned."""
     import contact.solver as S
     w = contact.ProfilePunch(lambda X: 0.2 * X**3 - 0.2 * X, face=(-2.0, 2.0))
     m = contact.zhou2014()
     plain = contact.solve(m, w, load=1e-2, speed=0.3, friction=0.3)
-    verdicts, followed = iter([False]), []     # the first refined state is declared invalid
-    real_inspect, real_refollow = S.inspect_state, S._refollow
+    # the first two refined states are declared invalid
+    verdicts, again_checked, followed = iter([False, False]), [], []
+    real_inspect, real_again, real_refollow = (S.inspect_state, S.follow_last_again,
+                                               S._refollow)
     monkeypatch.setattr(S, "inspect_state",
                         lambda face, eq, st: next(verdicts, real_inspect(face, eq, st)))
+    monkeypatch.setattr(S, "follow_last_again",
+                        lambda *args: again_checked.append(1) or real_again(*args))
 
     def refollow(*args):
         followed.append(args[4])
         return real_refollow(*args)
     monkeypatch.setattr(S, "_refollow", refollow)
     again = contact.solve(m, w, load=1e-2, speed=0.3, friction=0.3)
-    assert followed == [0]
+    assert again_checked == [1] and followed == [0]
     assert len(again.zones) == len(plain.zones) == 2
     for za, zp in zip(again.zones, plain.zones):
         assert za.ends == pytest.approx(zp.ends, abs=1e-12)

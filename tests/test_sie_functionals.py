@@ -56,3 +56,31 @@ def test_prepared_rule_equals_dominant_functionals(left, right, a, b):
             assert got.consistency is None
         else:
             assert got.consistency == pytest.approx(want.consistency, rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("left,right", [("singular", "bounded"), ("bounded", "singular"),
+                                        ("bounded", "bounded")])
+@pytest.mark.parametrize("breaks", [[0.3], [-0.5, 0.2], [0.2, -0.5, 0.2]])
+def test_prepared_rule_with_breaks_equals_dominant_functionals(left, right, breaks):
+    """rule(f, breaks) (the composite rule formed per call) returns what
+    dominant_functionals(..., breaks=...) computes, for an f that kinks at the breaks."""
+    rule = sie.FunctionalsRule(a=0.4, b=-1.0, n=12, left=left, right=right)
+
+    def f(s):
+        return np.abs(s - 0.3) + np.maximum(s + 0.5, 0.0) ** 2 + np.abs(s - 0.2)
+
+    want = sie.dominant_functionals(f, a=0.4, b=-1.0, n=12, left=left, right=right,
+                                    breaks=breaks)
+    got = rule(f, breaks)
+    assert got.integral == pytest.approx(want.integral, rel=1e-13)
+    if want.consistency is None:
+        assert got.consistency is None
+    else:
+        assert got.consistency == pytest.approx(want.consistency, rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("breaks", [[1.0], [-1.2], [np.nan], ["x"]])
+def test_prepared_rule_refuses_breaks_outside_the_interval(breaks):
+    rule = sie.FunctionalsRule(a=0.4, b=-1.0, n=12, left="bounded", right="bounded")
+    with pytest.raises(sie.InvalidBreakpointError):
+        rule(np.cos, breaks)
