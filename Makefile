@@ -1,12 +1,13 @@
 # Two commands do all set-up on a fresh machine with Python 3.11 + pip:
 #   make run    -> creates .venv, installs, runs the main job
 #   make test   -> same set-up, then the whole test suite
+#   make test-fast -> the same without the tests marked slow
 PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: run test bench report docs clean venv
+.PHONY: run test test-fast bench report docs clean venv
 
 venv: $(STAMP)
 
@@ -23,6 +24,10 @@ run: $(STAMP)
 
 test: $(STAMP)
 	$(PY) -m pytest -q
+
+# the everyday subset: everything not marked slow (the doctests included), < 2 min on 2 cores
+test-fast: $(STAMP)
+	$(PY) -m pytest -q -m "not slow"
 
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -e ".[bench]"
