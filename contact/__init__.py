@@ -17,6 +17,7 @@ from .material import Isotropic, Orthotropic, zhou2014
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
 from .result import ContactZone, LoadCurve
+from .samples import OutsideSamplesError, SampleError
 from .solver import ContactResult, contact_length, load_curve, solve, solve_batch
 from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 
@@ -28,7 +29,8 @@ __all__ = [
     "contact_length",
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",
-    "DirectionError", "PunchGeometryError", "ProfileCallableError", "ContactLossError",
+    "DirectionError", "PunchGeometryError", "SampleError", "OutsideSamplesError",
+    "ProfileCallableError", "ContactLossError",
     "StressPointError", "UnboundedStressError", "CauchyTransformError",
     "NearRayleighWarning",
 ]

@@ -35,7 +35,7 @@ import contact
 import sie
 
 from . import scene as scenes
-from .solver import cyclic_gc_paused
+from .scene.processes import cyclic_gc_paused
 from .registry import KINDS
 
 #: The 14 relative speeds of Table 1 in Zhou, Lee & Jang 2014.

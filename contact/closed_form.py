@@ -12,7 +12,7 @@ N11 must be negative (N11 >= 0 raises :class:`~contact.errors.MaterialError`), N
 any finite reals.
 
 Mathematics (re-derived; every item is checked against mpmath quadrature in
-``tests/test_closed_form.py``)
+``tests/contact/test_closed_form.py``)
 --------------------------------------------------------------------------------------------
 Contact [x_l, x_r], L = (x_r - x_l)/2, X = L*s + (x_r + x_l)/2, p(X) = psi(s),
 psi(s) = w(s)*(d0 + d1*s), w(s) = (1 - s)^alpha (1 + s)^beta, kappa = -(alpha + beta).
@@ -83,6 +83,7 @@ import math
 from dataclasses import dataclass, field
 import numpy as np
 
+from .punches import CylindricalPunch, FlatPunch, ParabolicPunch, TriangularPunch
 from .errors import (
     DirectionError,
     FrictionError,
@@ -100,6 +101,7 @@ __all__ = [
     "triangular_closed_form",
     "parabolic_closed_form",
     "cylindrical_closed_form",
+    "CLOSED_FORMS",
 ]
 
 _FAR = 4.0  # |s| beyond which the hypergeometric (Euler integral) form is used outside
@@ -481,3 +483,9 @@ def cylindrical_closed_form(N11, N12, N21, N22, mu_f, radius, load) -> ClosedFor
     c0 = -a0 * sin0 / (2.0 * N11 * R)
     return _build("cylindrical", N11, N12, N21, N22, mu_f, (-a, b),
                   (alpha, beta, 1.0 + alpha, 1.0 + beta, sin0), c0, 0.0, P, {})
+
+
+#: The punch types the paper solves in closed form (Zhou et al. 2014, Section 5) and the
+#: function of this module for each; a subclass is not among them (it may change the face).
+CLOSED_FORMS = {FlatPunch: flat_closed_form, TriangularPunch: triangular_closed_form,
+                ParabolicPunch: parabolic_closed_form, CylindricalPunch: cylindrical_closed_form}

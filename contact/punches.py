@@ -29,6 +29,7 @@ import numpy as np
 
 from sie.errors import SIEInputError
 
+from .samples import MIN_SAMPLES, OutsideSamplesError, face_from_samples
 from .errors import (ContactInputError, ProfileCallableError, PunchGeometryError, check_number,
                      real_array)
 
@@ -511,6 +512,8 @@ class ProfilePunch(Punch):
     1.0
     """
     kind = "profile"
+    #: The fewest samples :meth:`from_samples` takes.
+    MIN_SAMPLES = MIN_SAMPLES
 
     def __init__(self, slope: Optional[Callable] = None, breaks=(), corners=(None, None), *,
                  height: Optional[Callable] = None, face=None):
@@ -561,12 +564,12 @@ class ProfilePunch(Punch):
 
         Raises
         ------
-        contact.samples.SampleError
-            Fewer than 4 samples, NaN / inf, X unsorted or repeated, lengths that differ.
-        contact.samples.OutsideSamplesError
+        contact.SampleError
+            Fewer than :attr:`MIN_SAMPLES` samples, NaN / inf, X unsorted or repeated,
+            lengths that differ.
+        contact.OutsideSamplesError
             ``face`` reaches beyond the samples with ``outside="raise"``.
         """
-        from .samples import OutsideSamplesError, face_from_samples
         sf = face_from_samples(X, h, kind=kind, breaks=breaks, outside=outside)
         ext = sf.extent if face is None else _face(face)
         if outside == "raise" and (ext[0] < sf.extent[0] or ext[1] > sf.extent[1]):

@@ -27,8 +27,8 @@ from typing import Callable, Optional
 import numpy as np
 from numpy.polynomial.polynomial import polyval
 
-from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
-                      TriangularPunch)
+from contact import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
+                     TriangularPunch)
 
 __all__ = ["PunchKind", "KINDS", "PROFILE_SHAPE_KEYS", "INTERPOLANTS", "Piece", "Samples",
            "PolynomialSlope", "PiecewiseSlope", "build_profile", "import_callable",
@@ -90,13 +90,6 @@ class PunchKind:
             return build_profile(values, base_dir)
         return self.cls(**{key: values[key] for key in self.dimensions})
 
-    def closed_form_function(self) -> Optional[Callable]:
-        """The closed-form solver of this kind (a function of :mod:`contact.closed_form`),
-        or None."""
-        if self.closed_form is None:
-            return None
-        from . import closed_form
-        return getattr(closed_form, self.closed_form)
 
 
 _PROFILE_KEYS = ("slope", "height", "pieces", "data", "interpolant", "breaks", "corners", "face")

@@ -78,11 +78,35 @@ _SLACK = 64 * np.finfo(float).eps
 
 class SampleError(PunchGeometryError):
     """The samples (X_i, h_i) cannot define a face: too few, not finite, X not strictly
-    increasing, lengths differ, not 1-D."""
+    increasing, lengths differ, not 1-D.
+
+    Raised by :meth:`contact.ProfilePunch.from_samples`.
+
+    Examples
+    --------
+    >>> import contact
+    >>> contact.ProfilePunch.from_samples([0.0, 1.0, 2.0], [0.0, 1.0, 4.0])
+    Traceback (most recent call last):
+        ...
+    contact.samples.SampleError: at least 4 samples are needed to define a face, got 3
+    """
 
 
 class OutsideSamplesError(PunchGeometryError):
-    """A sampled face (``outside="raise"``) was evaluated outside its extent."""
+    """A sampled face (``outside="raise"``) asked for, or evaluated, outside its samples.
+
+    Raised by :meth:`contact.ProfilePunch.from_samples` for a ``face`` wider than the
+    samples, and by the face's slope and height beyond them.
+
+    Examples
+    --------
+    >>> import numpy as np, contact
+    >>> X = np.linspace(-1.0, 1.0, 9)
+    >>> contact.ProfilePunch.from_samples(X, X ** 2, face=(-2.0, 1.0))
+    Traceback (most recent call last):
+        ...
+    contact.samples.OutsideSamplesError: face (-2.0, 1.0) reaches beyond the samples, ...
+    """
 
 
 @dataclass(frozen=True, eq=False, repr=False)

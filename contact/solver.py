@@ -16,8 +16,6 @@ is the side condition.  Index 0 (one corner): the free end is the root of load(L
 from __future__ import annotations
 
 import gc
-import os
-import threading
 import warnings
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
@@ -29,6 +27,7 @@ from sie import N_MAX
 from sie.assembly import N_MAX_DENSE
 from sie.exponents import MIN_B_OVER_A, check_coefficients
 
+from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
 from .continuation import ZoneState, follow_last_again, follow_load, inspect_state
 from .lockstep import first_steps
@@ -282,7 +281,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
             continue
         cases.append((i, _Case(const, Pi, float(Vi), Mi, Di, mu_f)))
     if cases:
-        with cyclic_gc_paused():
+        with _collections_deferred():
             solved = _numeric_cases(material, punch, [c for _, c in cases], n, tol,
                                     errors=errors, residual=residual)
         for (i, _), r in zip(cases, solved):
@@ -290,63 +289,37 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
     return out
 
 
-#: Open :func:`cyclic_gc_paused` blocks of this process (all threads together), and whether
-#: the collector was on before the first of them: it comes back when the last one ends.
-_gc_pauses = 0
-_gc_on_before = False
-_gc_lock = threading.Lock()
+#: Allocations between passes of the collector over the young objects while a batch of cases
+#: runs (Python's default is 700); the open batches of the process, and the thresholds before
+#: the first of them, which come back when the last one ends.
+_BATCH_GC_THRESHOLD = 100_000
+_deferrals = 0
+_threshold_before = None
 
 
 @contextmanager
-def cyclic_gc_paused():
-    """Python's cyclic garbage collector paused for a batch of cases (and as it was before,
-    after the last open pause of the process, whichever thread opened it).  A batch allocates
-    some hundred small objects a case and keeps them to its end; each pass of the collector
-    that they set off walks the young objects, and every so often all of the process's
-    (numpy's, numba's, scipy's: ~1e5; a Dask worker's ~1.6e5), which cost ~40 % of a
-    cylinder case (measured: 76-96 us a case with the collector, 40-50 us without).
-    Reference counting frees what a batch discards: it makes no reference cycles (a whole
-    sweep left ten objects to the collector).
-
-    A process forked while a pause is open (a pool's worker started from inside one) gets
-    the collector as it was before the pause: the child never reaches the pause's end (a
-    pool's worker leaves by ``os._exit``), and would otherwise run without a collector for
-    the rest of its life, whatever else it runs.  The objects it inherits are frozen there
-    (:func:`gc.freeze`, as the Python documentation advises for a process forked without
-    exec): its collections walk what it makes itself, not every object of numpy, numba and
-    scipy, whose pages they would also copy by writing to them.
-    """
-    global _gc_pauses, _gc_on_before
-    with _gc_lock:
-        if _gc_pauses == 0:
-            _gc_on_before = gc.isenabled()
-        _gc_pauses += 1
-        gc.disable()
+def _collections_deferred():
+    """Python's cyclic collector run rarely while a batch of cases runs: a batch allocates
+    some hundred small objects a case and keeps them to its end, and each pass of the
+    collector that they set off walks the young objects, every so often all of the
+    process's (numpy's, numba's, scipy's).  Reference counting frees what a batch discards
+    (it makes no reference cycles).  The collector stays on, its first threshold raised to
+    :data:`_BATCH_GC_THRESHOLD` until the last open batch of the process ends.  No lock
+    (a process forked while a thread held one would wait on it for ever): two threads that
+    open and close batches at the same instant can at worst leave the threshold raised, and
+    a process forked inside a batch keeps it; either only makes the collector run less
+    often."""
+    global _deferrals, _threshold_before
+    if _deferrals == 0:
+        _threshold_before = gc.get_threshold()
+        gc.set_threshold(max(_BATCH_GC_THRESHOLD, _threshold_before[0]), *_threshold_before[1:])
+    _deferrals += 1
     try:
         yield
     finally:
-        with _gc_lock:
-            # max: a forked child that leaves the pauses it inherited open counted them as
-            # none (_gc_in_forked_child)
-            _gc_pauses = max(0, _gc_pauses - 1)
-            if _gc_pauses == 0 and _gc_on_before:
-                gc.enable()
-
-
-def _gc_in_forked_child():
-    """After a fork, in the child: the collector as it was before the parent's open pauses
-    (if on, with the inherited objects frozen), none of them open here, and a lock of its
-    own (the parent's may have been held by a thread that the child does not have)."""
-    global _gc_pauses, _gc_lock
-    _gc_lock = threading.Lock()
-    if _gc_pauses and _gc_on_before:
-        gc.freeze()
-        gc.enable()
-    _gc_pauses = 0
-
-
-if hasattr(os, "register_at_fork"):                 # POSIX; elsewhere processes are spawned
-    os.register_at_fork(after_in_child=_gc_in_forked_child)
+        _deferrals = max(0, _deferrals - 1)
+        if _deferrals == 0 and _threshold_before is not None:
+            gc.set_threshold(*_threshold_before)
 
 
 def _signed_friction(const, friction, direction) -> float:
@@ -616,11 +589,9 @@ def _zone_info(z, j, sol):
 
 
 def _closed_form_result(const, punch, load, speed, friction, direction, mu_f, material):
-    from .registry import KINDS, closed_form_kinds
-    kind = KINDS.get(punch.kind)
-    solver = kind.closed_form_function() if kind is not None and type(punch) is kind.cls else None
+    solver = CLOSED_FORMS.get(type(punch))
     if solver is None:
-        names = ", ".join(KINDS[k].cls.__name__ for k in closed_form_kinds())
+        names = ", ".join(cls.__name__ for cls in CLOSED_FORMS)
         raise ContactInputError(
             f'method="closed_form" exists only for {names}; use method="numeric" for '
             f'{type(punch).__name__}')

@@ -880,7 +880,7 @@ def gauss_jacobi(n, alpha, beta):
     O(n) for n > 100 (Hale & Townsend 2013 interior asymptotics, boundary
     nodes by Newton on the recurrence in 1 - x); see the module docstring for
     the dispatch ladder.  Accuracy: nodes ~1e-16 absolute, weights ~1e-14
-    relative (tests/test_gauss_jacobi.py checks against mpmath), also for exponents
+    relative (tests/sie/test_gauss_jacobi.py checks against mpmath), also for exponents
     within 1e-12 of -1.  A node closer to an end than the spacing of doubles there is
     returned one ulp inside (-1, 1).
 

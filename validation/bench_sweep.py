@@ -69,8 +69,8 @@ def sweep_toml(n_speed, n_friction, fields=("ends", "exponents", "sif")):
             f"fields = {list(fields)!r}\n".replace("'", '"'))
 
 
-#: Dask settings for sweeps of sub-millisecond cases (README, "Sweeps on several cores or a
-#: cluster"): no statistical profiler sampling the task thread every 10 ms; glibc's malloc
+#: Dask settings for sweeps of sub-millisecond cases (docs/scenes.rst, sweeps on a
+#: cluster): no statistical profiler sampling the task thread every 10 ms; glibc's malloc
 #: left to tune its own thresholds (Dask's nannies set MALLOC_TRIM_THRESHOLD_, which also
 #: fixes the mmap threshold: every array over 128 kB is mapped and unmapped; None unsets it
 #: alone, Dask's one-thread limits for BLAS stay); each process's event loop checked every

@@ -1,6 +1,6 @@
 """Independent references for the surface constants N11, N12, N21, N22 and the Rayleigh speed.
 
-One home for the reference computations that ``tests/test_contact_constants.py`` asserts
+One home for the reference computations that ``tests/contact/test_contact_constants.py`` asserts
 against and the report (section 2) tabulates; none of them calls :mod:`contact.constants`.
 
 * **State space at one wavenumber k**: the 4x4 first-order system for the Fourier amplitudes

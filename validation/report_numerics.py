@@ -71,7 +71,7 @@ def section_closed_forms(ctx):
     doc.p("Numeric path (`contact.solve`, Gauss-Jacobi collocation through `sie.solve`, adaptive n, "
           "contact ends found by root finding) against the corrected closed forms "
           "(`method=\"closed_form\"`, verified separately against mpmath quadrature in "
-          "tests/test_closed_form.py), over speed c in {" + ", ".join(f"{c:g}" for c in speeds)
+          "tests/contact/test_closed_form.py), over speed c in {" + ", ".join(f"{c:g}" for c in speeds)
           + f"}} (c_R = {c_R:.4f}), friction mu in {{" + ", ".join(f"{m:g}" for m in mus)
           + "} and both directions, P = 0.01. Errors, all relative: contact ends (to the contact "
           "length), pressure at 40 interior Chebyshev points (to max p), sigma_XX at the same points "
@@ -649,10 +649,10 @@ def section_work_precision(ctx):
 # 7. hard cases
 # ------------------------------------------------------------------------------------------
 def _manufactured():
-    tests = str(ROOT / "tests")
-    if tests not in sys.path:
-        sys.path.insert(0, tests)
-    import manufactured as M                       # tests/manufactured.py: mpmath references
+    refs = str(ROOT / "tests" / "reference")
+    if refs not in sys.path:
+        sys.path.insert(0, refs)
+    import manufactured as M              # tests/reference/manufactured.py: mpmath references
     return M
 
 
@@ -662,7 +662,7 @@ def section_hard_cases(ctx):
     M = _manufactured()
     S = M.sample_points(50)
     quick = ctx.quick
-    doc.p("**SIE core.** Manufactured problems of tests/manufactured.py (right-hand side from Tricomi's "
+    doc.p("**SIE core.** Manufactured problems of tests/reference/manufactured.py (right-hand side from Tricomi's "
           "closed form for the Hilbert transform of the weight, 40-digit mpmath rules; independent of "
           "`sie`). Error: max over 50 points of |phi - phi_exact| and |psi - psi_exact|/w, relative to "
           "max |phi|, and of the integral of psi. Condition: `Solution.condition` (2-norm condition "
@@ -698,7 +698,7 @@ def section_hard_cases(ctx):
         run(P, 5000, f"n = 5000: a/b = {ratio:g}, {left}/{right}, phi = exp(s), no kernel")
         if quick:
             break
-    # nearly degenerate kappa = -1 (tests/test_solve_manufactured.py::_near_degenerate)
+    # nearly degenerate kappa = -1 (tests/sie/test_solve_manufactured.py::_near_degenerate)
     for delta in ((1e-3,) if quick else (1e-3, 1e-6)):
         P0 = M.problem(0.7, 1.0, "bounded", "bounded", "1/(3-s)", None)
         scale = -(1.0 - delta) * P0.b / P0.integral

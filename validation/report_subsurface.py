@@ -82,7 +82,7 @@ def _friction_table(doc, quick):
           "moves toward the leading edge and up, until at mu* it falls below mu p0.")
     doc.table(["mu", "subsurface peak / p0", "its X / a", "its depth / a",
                "largest max shear / p0", "where (depth / a)"], rows)
-    doc.p(f"mu* = {mu_star:.6f} (our field's extrema; tests/test_subsurface_api.py finds the "
+    doc.p(f"mu* = {mu_star:.6f} (our field's extrema; tests/contact/test_subsurface_api.py finds the "
           "same mu* to 1e-6 from McEwen's closed form by an independent maximisation). "
           "Published maps of this line contact bracket it: the peak is below the surface at "
           "mu = 0.1 and on it at mu = 0.4 (Rules of Thumb for Mechanical Engineers, 'Effect of "

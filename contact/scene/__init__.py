@@ -165,8 +165,9 @@ from __future__ import annotations
 from .output import SceneWriter, check_out_dir, stale_outputs, write_outputs
 from .summary import format_table
 from .parse import default_scene, load_scene, parse_scene_text
-from .run import (CaseResult, CaseText, SceneResult, SceneRun, SubsurfaceMap, iter_scene,
-                  run_case, run_cases, run_scene)
+from .run import (CaseResult, SceneResult, SceneRun, SubsurfaceMap, iter_scene, run_case,
+                  run_cases, run_scene)
+from .table import CaseText
 from .spec import (CURVE_FIELDS, DEFAULT_SCENE_TOML, FIELDS, CaseError, Case, MaterialSpec,
                    Numerics, PunchSpec, Scene, SceneError, SubsurfaceGrid, XGrid)
 

@@ -36,7 +36,7 @@ import math
 import time
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-from contact.solver import cyclic_gc_paused
+from .processes import cyclic_gc_paused
 
 #: Seconds of solving a chunk aims at: well above a Dask task's overhead (measured: 0.05 s
 #: chunks put a LocalCluster 1.2-1.4x behind a process pool on 2 cores, 0.2 s 1.1-1.25x).
@@ -85,9 +85,10 @@ def run_chunk(fn, cases):
     result per case, a case's library input error (contact.ContactInputError,
     sie.SIEInputError) in place of its result, so that the caller can report the first
     failing case in scene order.  Python's cyclic collector is paused throughout
-    (:func:`contact.solver.cyclic_gc_paused`), the building of the cases from their scene
-    included: a worker's passes over its imported objects cost a Dask worker 3 us a case
-    (measured: a cylinder sweep's chunks, 44 -> 41 us a case of the task thread's time)."""
+    (:func:`contact.scene.processes.cyclic_gc_paused`), the building of the cases from
+    their scene included: a worker's passes over its imported objects cost a Dask worker
+    3 us a case (measured: a cylinder sweep's chunks, 44 -> 41 us a case of the task
+    thread's time)."""
     with cyclic_gc_paused():
         cases = list(cases)
         return list(zip([case.index for case in cases], fn(cases)))
@@ -154,7 +155,7 @@ class ChunkResults:
 
     def __reduce__(self):
         """Pickled a column at a time where every result is a named tuple of one type (a
-        lean writer's :class:`~contact.scene.run.CaseText`): lists of strings and numbers,
+        lean writer's :class:`~contact.scene.table.CaseText`): lists of strings and numbers,
         which pickle and unpickle in C, in place of a Python call per case each way
         (measured on 3000 texts of a cylinder sweep: 0.95 and 1.1 us a case against 1.45
         and 2.0; 1e5 texts from a LocalCluster of 2 workers: the client's and the

@@ -31,8 +31,9 @@ import numpy as np
 
 from .figures import (MAX_CURVES, SUBSURFACE_PANELS, _write_curve_figures,
                       _write_subsurface_figures, evenly_spaced)
-from .run import (SUBSURFACE_QUANTITIES, CaseResult, CaseText, SceneResult, _json_case,
-                  _json_head, _json_tail, case_text, progress_bar)
+from .run import (SUBSURFACE_QUANTITIES, CaseResult, SceneResult, _json_case, _json_head,
+                  _json_tail, progress_bar)
+from .table import CaseText, case_text
 from .spec import CURVE_FIELDS, Scene
 from .summary import TableRows, TableSummary
 from .table import SweepCsv, SweepTable, row_lines
@@ -171,7 +172,7 @@ class SceneWriter:
 
     def add_all(self, results) -> None:
         """Write (or spool) cases, the next ones in scene order (a list: one write per file
-        for the lot): :class:`CaseResult`, or :class:`~contact.scene.run.CaseText` from
+        for the lot): :class:`CaseResult`, or :class:`~contact.scene.table.CaseText` from
         this writer's lean :meth:`encoder`."""
         self._json.add_all(results)
         self._sweep.add_all(results)
@@ -429,12 +430,12 @@ def case_json(res: CaseResult) -> str:
 
 class CaseEncoder:
     """What the writers make of a case on its own -- its entry of result.json and its rows
-    of sweep.csv, as text (:class:`~contact.scene.run.CaseText`) -- made where the case is
+    of sweep.csv, as text (:class:`~contact.scene.table.CaseText`) -- made where the case is
     solved (a worker of an executor: :func:`contact.scene.iter_scene`'s ``encode``), so that
     the process that writes the files copies them instead of formatting them (~20 us a
     case, which bounded how many workers it could keep busy).  A picklable callable:
     ``encoder(res)`` returns ``res`` with ``res.encoded`` set, or, ``lean``, the
-    :class:`~contact.scene.run.CaseText` alone (for a writer that keeps nothing else of a
+    :class:`~contact.scene.table.CaseText` alone (for a writer that keeps nothing else of a
     case: :meth:`SceneWriter.encoder`).  ``table``: the text carries the case's row of the
     printed table too (:class:`~contact.scene.summary.TableRows`).
     """

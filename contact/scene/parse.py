@@ -13,7 +13,6 @@ from sie import N_MAX
 
 from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
                               closed_form_kinds, import_callable)
-from contact.samples import MIN_SAMPLES, SampleError, face_from_samples
 
 from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, GRID_KEYS, MATERIAL_KEYS,
                    METHODS, MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS,
@@ -258,7 +257,7 @@ class _Parser:
     def samples(self, value, interpolant) -> Samples:
         """Read and check the samples of punch.data (two columns X, h)."""
         allowed = ('a file of two columns X, h (comma or whitespace separated, an optional '
-                   f'header line, # comments), at least {MIN_SAMPLES} rows, X increasing; '
+                   f'header line, # comments), at least {contact.ProfilePunch.MIN_SAMPLES} rows, X increasing; '
                    "relative to the scene file's directory")
         if not isinstance(value, str) or not value:
             raise self.error("punch.data", f"must be a file name, got {_describe(value)}",
@@ -280,8 +279,8 @@ class _Parser:
         except ValueError as exc:
             raise self.error("punch.data", f"{path}: {exc}", allowed) from None
         try:
-            face_from_samples(X, h, kind=interpolant)
-        except SampleError as exc:
+            contact.ProfilePunch.from_samples(X, h, kind=interpolant)
+        except contact.SampleError as exc:
             raise self.error("punch.data", f"{path}: {exc}", allowed) from None
         return Samples(source=value, path=str(path), X=tuple(X), h=tuple(h))
 

@@ -18,9 +18,9 @@ import numpy as np
 import contact
 import sie
 
-from contact.solver import cyclic_gc_paused
-
 from .batch import build_once, iter_chunks
+from .processes import cyclic_gc_paused
+from .table import CaseText, case_text, sweep_table, to_dataframe
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
                    SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
@@ -83,40 +83,6 @@ class CaseResult:
         return c["x"], c["values"]
 
 
-class CaseText(NamedTuple):
-    """A case as the writers write it: its entry of result.json and its rows of sweep.csv
-    as text, made where it was solved (:class:`contact.scene.output.CaseEncoder`).  A
-    result's ``encoded``; what a lean encoder gives in its place, for a writer that keeps
-    nothing else of a case: a tuple of strings and numbers crosses from a worker at a
-    fraction of a result's cost (measured without the table row: 1.2 and 0.6 us a case to
-    pickle and unpickle, against 3.5 and 2.5)."""
-    index: int
-    label: str
-    #: As :attr:`CaseResult.time_s`.
-    time_s: float
-    #: As :attr:`CaseResult.warnings`.
-    warnings: tuple
-    #: Its entry of result.json, at its indentation there.
-    json: str
-    #: Its raw row of sweep.csv (:class:`contact.scene.table.SweepTable`), a line of CSV.
-    row: str
-    #: Its row of sweep.csv when every case has one zone; None if it has several.
-    single_zone_row: str | None
-    #: How many contact zones it has.
-    zones: int
-    #: Its row of the printed table, (columns, the raw number of each cell), or None when
-    #: not made (:meth:`contact.scene.summary.TableRows.columns`).
-    table_row: tuple | None = None
-    #: As :attr:`CaseResult.speed_warnings`.
-    speed_warnings: tuple = ()
-
-
-def case_text(res) -> CaseText | None:
-    """The text of a case as the writers have it: a :class:`CaseText` itself, a result's
-    ``encoded`` (None: not encoded)."""
-    return res if type(res) is CaseText else res.encoded
-
-
 @dataclass
 class SubsurfaceMap:
     """The plane stresses of one case on its grid (tension positive, stress unit S).
@@ -165,7 +131,6 @@ class SceneResult:
     def table(self) -> tuple:
         """The tidy sweep table of sweep.csv: (column names, rows), one row per case in scene
         order, None where a cell is empty (:func:`contact.scene.table.sweep_table`)."""
-        from .table import sweep_table
         return sweep_table(self)
 
     def to_dataframe(self):
@@ -176,7 +141,6 @@ class SceneResult:
         ImportError
             Without pandas (an optional extra: ``pip install 'sie-contact[pandas]'``).
         """
-        from .table import to_dataframe
         return to_dataframe(self)
 
 

@@ -10,7 +10,8 @@ import numpy as np
 
 import contact
 
-from .run import CaseResult, CaseText, SceneResult, _inputs_text
+from .run import CaseResult, SceneResult, _inputs_text
+from .table import CaseText
 from .spec import SUBSURFACE_CUT, Scene, _fmt
 
 #: The printed table shows every case of a sweep of at most this many; a longer one shows the

@@ -106,13 +106,17 @@ def test_parser_errors_list_the_registry_kinds():
 def test_closed_form_entries_name_functions_of_contact_closed_form():
     have = closed_form_kinds()
     assert have == ("flat", "triangular", "parabolic", "cylindrical")
+    forms = contact.closed_form.CLOSED_FORMS
     for name in have:
-        fn = KINDS[name].closed_form_function()
-        assert fn is getattr(contact.closed_form, f"{name}_closed_form")
-        dim = KINDS[name].dimensions[0]
+        kind = KINDS[name]
+        # the registry names the function that contact.solve uses for that class
+        assert kind.closed_form == f"{name}_closed_form" == forms[kind.cls].__name__
+        assert forms[kind.cls] is getattr(contact.closed_form, kind.closed_form)
+        dim = kind.dimensions[0]
         s = scene(f'kind = "{name}"\n{dim} = 1.0\n', '[numerics]\nmethod = "closed_form"\n')
         assert s.numerics.method == "closed_form"
-    assert KINDS["profile"].closed_form_function() is None
+    assert set(forms) == {KINDS[name].cls for name in have}
+    assert KINDS["profile"].closed_form is None
     with pytest.raises(SceneError) as err:
         scene('kind = "profile"\nslope = [0.0, 0.01]\n', '[numerics]\nmethod = "closed_form"\n')
     assert err.value.key == "numerics.method"
