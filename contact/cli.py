@@ -180,8 +180,7 @@ def console():
 
     Before the interpreter tears itself down, the objects still alive are moved out of the
     cyclic collector's reach (:func:`gc.freeze`): its passes at exit over every object of
-    numpy, numba and scipy cost ~0.1 s of each run, on one core (measured on `contact run`
-    of 1e5 cases: 0.14 s from the end of main() to the end of the process, 0.03 s frozen).
+    numpy, numba and scipy would cost each run a noticeable share of a short run's time.
     Files are closed by main() itself; reference counting still frees what is torn down.
 
     SIGTERM stops the command as Ctrl-C does (:class:`Terminated`): its partial outputs are
@@ -398,7 +397,7 @@ def _pool_context():
     """The multiprocessing context of ``--jobs N``'s pool: "fork" on Linux, whatever the
     interpreter's default (from Python 3.14 it is "forkserver" there), so that the workers
     start as copies of this process after its first cases, the libraries imported and
-    numba's kernels loaded, instead of spending ~0.6 s each on them again; elsewhere the
+    numba's kernels loaded, instead of spending their start on them again; elsewhere the
     platform's default ("spawn" on macOS and Windows, where forking a process that has
     loaded system frameworks is unsafe)."""
     if sys.platform.startswith("linux"):

@@ -43,7 +43,7 @@ __all__ = ["solve", "solve_batch", "load_curve", "ContactResult", "LoadCurve", "
 
 _N_DEFAULT = 12
 _N_FOLLOW = 512    # the continuation raises n up to here to resolve its states (adaptive n)
-_N_MAX = 4096      # adaptive doubling stops here (n = 3072 from 12: ~0.07 s for a free-end profile)
+_N_MAX = 4096      # adaptive doubling stops here
 
 
 # --------------------------------------------------------------------------
@@ -543,13 +543,15 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, mate
         if adaptive:
             # a load curve starts each load's doubling at half the n the previous one needed
             refined = _refine(face, eq, state, tol, punch, n_start)
-            if i == len(states) - 1 and not inspect_state(face, eq, refined):
+            valid = inspect_state(face, eq, refined)
+            if i == len(states) - 1 and not valid:
                 # the step to the last load did not check the gap: to that load again with
                 # every check (and the events on the way), from the load before or from
                 # first touch
                 state = follow_last_again(face, eq, states, loads)
                 refined = _refine(face, eq, state, tol, punch, n_start)
-            if not inspect_state(face, eq, refined):
+                valid = inspect_state(face, eq, refined)
+            if not valid:
                 # the continuation's state passed its checks at a smaller n, within that n's
                 # truncation; at the refined n it violates p >= 0 or the gap: follow the
                 # load again at that n (its checks are then as tight as the answer)

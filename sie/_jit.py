@@ -102,7 +102,7 @@ def _drop_stale_entries(dispatcher):
     the kernels it calls and compiles into itself: a kernel whose callee in another module
     changed would load its old machine code, silently (as ``sie.batch._cauchy_limits`` kept
     an old ``sie.cauchy_kernels._f0``).  A stamp of every module's stat kept beside the
-    entries catches that; a changed stamp drops them all (recompiled on first call, ~2 s).
+    entries catches that; a changed stamp drops them all (recompiled on first call).
     Installed packages never change: one stat per module at import."""
     if _STAMPED:
         return

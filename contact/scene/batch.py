@@ -1,9 +1,9 @@
 """Running a scene's cases in chunks: in this process, in a process pool or on a Dask cluster.
 
-One task per case costs more than the case when the case is cheap (a cylindrical punch solves
-in ~0.1 ms within a chunk, ~0.3 ms alone; a Dask task costs 5-25 ms of CPU between the
-scheduler, the client and the worker on a loaded 2-core machine, a process-pool task ~0.1 ms
-plus pickling).  Cases therefore travel in chunks, and a chunk travels as a range of case
+One task per case costs more than the case when the case is cheap: a cylindrical punch solves
+in a fraction of a millisecond, a Dask task costs milliseconds of CPU between the scheduler,
+the client and the worker (the documentation, Accuracy and speed: Sweeps, has the
+measurements behind this module's constants).  Cases therefore travel in chunks, and a chunk travels as a range of case
 indices with the scene they come from: the worker builds its cases itself
 (:meth:`contact.scene.spec.Scene.iter_cases`), so that the process that hands out the work
 neither builds nor pickles them one by one.  Chunks are
@@ -20,8 +20,8 @@ neither builds nor pickles them one by one.  Chunks are
 * solved together where their cases share the material, the punch and the numerics
   (:func:`contact.scene.run.run_cases`, :func:`contact.solve_batch`).
 
-Results come back in scene order, a chunk at a time (:func:`iter_chunks`), so that a sweep runs in memory that
-does not grow with its length: at most ``CHUNKS_AHEAD`` full chunks per worker are handed out
+Results come back in scene order, a chunk at a time (:func:`iter_chunks`), so that a sweep
+runs in memory that does not grow with its length: at most ``CHUNKS_AHEAD`` full chunks per worker are handed out
 past the first case not yet delivered (those running, and those done early that wait for it).
 
 A case that fails in the library comes back as its exception; the results stop after the first
@@ -38,8 +38,8 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
 from .processes import cyclic_gc_paused
 
-#: Seconds of solving a chunk aims at: well above a Dask task's overhead (measured: 0.05 s
-#: chunks put a LocalCluster 1.2-1.4x behind a process pool on 2 cores, 0.2 s 1.1-1.25x).
+#: Seconds of solving a chunk aims at: well above a Dask task's overhead (shorter chunks put a
+#: LocalCluster further behind a process pool).
 TARGET_CHUNK_S = 0.2
 #: At least this many chunks per worker, for balance.
 CHUNKS_PER_WORKER = 4
@@ -48,7 +48,7 @@ TAIL_SPLIT = 2
 #: Full chunks per worker handed out past the first case not yet delivered.
 CHUNKS_AHEAD = 8
 #: Cases solved here first, to size the chunks of an executor: the first of them alone, which
-#: warms this process up (numba loading its kernels: ~0.15 s), then the rest as one chunk,
+#: warms this process up (numba loading its kernels), then the rest as one chunk,
 #: timed.
 _PROBE = 16
 #: Bytes a process pool's result pipe is asked to hold (:func:`widen_result_pipe`): a
@@ -86,9 +86,8 @@ def run_chunk(fn, cases):
     sie.SIEInputError) in place of its result, so that the caller can report the first
     failing case in scene order.  Python's cyclic collector is paused throughout
     (:func:`contact.scene.processes.cyclic_gc_paused`), the building of the cases from
-    their scene included: a worker's passes over its imported objects cost a Dask worker
-    3 us a case (measured: a cylinder sweep's chunks, 44 -> 41 us a case of the task
-    thread's time)."""
+    their scene included: the collector's passes over a worker's imported objects would
+    otherwise cost each case."""
     with cyclic_gc_paused():
         cases = list(cases)
         return list(zip([case.index for case in cases], fn(cases)))
@@ -125,10 +124,9 @@ def _dask_client(executor):
 
 class ChunkResults:
     """The [(index, result)] of one chunk as a single object on its way back: Dask serializes
-    a plain list (or tuple) element by element (measured on the 1e4 results of a cylinder
-    sweep: the client's IO loop spent 0.6 s of CPU on them, 0.5 s with this one piece; a
-    process pool pickles either in one piece), with the seconds the worker spent on it (what
-    sizes the next chunks)."""
+    a plain list (or tuple) element by element, in more of the client's time than one piece
+    (a process pool pickles either in one piece), with the seconds the worker spent on it
+    (what sizes the next chunks)."""
     __slots__ = ("items", "seconds", "_failed")
 
     def __init__(self, items, seconds=math.nan, failed=...):
@@ -156,10 +154,7 @@ class ChunkResults:
     def __reduce__(self):
         """Pickled a column at a time where every result is a named tuple of one type (a
         lean writer's :class:`~contact.scene.table.CaseText`): lists of strings and numbers,
-        which pickle and unpickle in C, in place of a Python call per case each way
-        (measured on 3000 texts of a cylinder sweep: 0.95 and 1.1 us a case against 1.45
-        and 2.0; 1e5 texts from a LocalCluster of 2 workers: the client's and the
-        scheduler's process 0.43 -> 0.22 s of CPU, each worker's event loop 0.19 -> 0.12 s)."""
+        which pickle and unpickle in C, in place of a Python call per case each way."""
         kind = type(self.items[0][1]) if self.items else None
         if getattr(kind, "_fields", None) and issubclass(kind, tuple) \
                 and not hasattr(self.items[0][1], "__dict__") \
@@ -195,8 +190,8 @@ def iter_chunks(fn, source, executor, on_done):
     each a list of (index, result or its exception), ending with the chunk of the first
     exception (a library input error, see :func:`run_chunk`), cut after it; ``fn`` solves
     a list of cases (:func:`contact.scene.run.run_cases`).  Delivering chunks, not cases,
-    keeps the consumer's work per case to what it does with the case (measured: a
-    generator step per case cost the process that feeds two workers 0.3 s on 1e5 cases).
+    keeps the consumer's work per case to what it does with the case (a generator step per
+    case would be a cost of its own in the process that feeds the workers).
 
     ``source`` is a :class:`~contact.scene.spec.Scene` (anything with ``case_count`` and
     ``iter_cases(start, stop)``, picklable when ``executor`` runs elsewhere).  The first
@@ -237,8 +232,8 @@ def iter_chunks(fn, source, executor, on_done):
     if not _warms_workers(executor):        # each worker warms up on its first chunk
         yield from _windowed(fn, source, executor, 0, total, None, workers, on_done)
         return
-    # the probe in two chunks: the first case warms this process up (numba's cache: ~0.15 s),
-    # the rest is timed
+    # the probe in two chunks: the first case warms this process up (numba's cache), the rest
+    # is timed
     probe, per_case = min(_PROBE, total), math.inf
     for start, stop in ((0, 1), (1, probe)):
         t0 = time.perf_counter()
@@ -310,7 +305,7 @@ def _warms_workers(executor) -> bool:
     threads or its forks (a pool of the "fork" start method, made after the warm-up), or
     unknown.  Not a Dask cluster's workers nor a pool of "spawn" or "forkserver"
     processes: each of those warms up on its own first chunk, and solving here first would
-    only keep them waiting (~0.1 s of numba loading its kernels, in series)."""
+    only keep them waiting (numba loading its kernels, in series)."""
     if _dask_client(executor) is not None:
         return False
     context = getattr(executor, "_mp_context", None)         # a ProcessPoolExecutor's

@@ -432,8 +432,8 @@ class CaseEncoder:
     """What the writers make of a case on its own -- its entry of result.json and its rows
     of sweep.csv, as text (:class:`~contact.scene.table.CaseText`) -- made where the case is
     solved (a worker of an executor: :func:`contact.scene.iter_scene`'s ``encode``), so that
-    the process that writes the files copies them instead of formatting them (~20 us a
-    case, which bounded how many workers it could keep busy).  A picklable callable:
+    the process that writes the files copies them instead of formatting them (formatting
+    them there bounds how many workers it can keep busy).  A picklable callable:
     ``encoder(res)`` returns ``res`` with ``res.encoded`` set, or, ``lean``, the
     :class:`~contact.scene.table.CaseText` alone (for a writer that keeps nothing else of a
     case: :meth:`SceneWriter.encoder`).  ``table``: the text carries the case's row of the
@@ -682,9 +682,8 @@ def dumps_json(obj, indent: str = _INDENT, _level: int = 0) -> str:
     one item a line, indented.  A case of result.json is a few lines: its inputs, ends,
     exponents, diagnostics, one line each.
 
-    The one-line parts are written by the json module's C encoder (measured on a case of a
-    cylinder sweep: 11 us against 15 us with a number at a time here, most of it the
-    shortest repr of each float); values it does not take as they are (numpy scalars, NaN)
+    The one-line parts are written by the json module's C encoder (faster than a number at a
+    time here, most of either the shortest repr of each float); values it does not take as they are (numpy scalars, NaN)
     go the slow way, which says what is wrong."""
     t = type(obj)
     if (t is list or t is tuple) and _ATOMS.issuperset(map(type, obj)) or \

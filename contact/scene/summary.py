@@ -67,7 +67,7 @@ class TableSummary:
         their columns' raw numbers (:meth:`TableRows.columns`) and are taken a column at a
         time: a column's extremes are the min and max of its finite numbers, and only the
         cells shown are formatted (:func:`table_cell`; formatting every cell of every case
-        cost a worker ~9 us a case)."""
+        would cost each case)."""
         by_columns = {}                     # a row's columns -> its cases' raw numbers
         zones = []
         for res in results:

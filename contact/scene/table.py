@@ -45,8 +45,7 @@ class CaseText(NamedTuple):
     as text, made where it was solved (:class:`contact.scene.output.CaseEncoder`).  A
     result's ``encoded``; what a lean encoder gives in its place, for a writer that keeps
     nothing else of a case: a tuple of strings and numbers crosses from a worker at a
-    fraction of a result's cost (measured without the table row: 1.2 and 0.6 us a case to
-    pickle and unpickle, against 3.5 and 2.5)."""
+    fraction of a result's cost to pickle and unpickle."""
     index: int
     label: str
     #: As :attr:`CaseResult.time_s`.
