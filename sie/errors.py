@@ -379,6 +379,7 @@ def call_checked(fn, name, args, shape):
         raise CallableOutputError(f"{name} returned a non-finite value at {where}")
     return out
 
+
 def is_number(value) -> bool:
     """Whether ``value`` is a real number: an int or a float (Python's or numpy's, a 0-d
     numeric array), or another object that converts itself to a float (``Fraction``,

@@ -561,7 +561,7 @@ class FunctionalsRule:
         if self.kappa == 1:
             return Functionals(None, None, e.alpha, e.beta, 1)
         _check_callable("f", f, "vectorised callable f(s)")
-        if len(breaks):
+        if np.size(breaks):
             return self._with_breaks(f, _unit_breaks(breaks))
         fs = call_checked(f, "f", (self.nodes,), self.nodes.shape)
         f_end = 0.0
