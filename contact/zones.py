@@ -245,6 +245,9 @@ class ZoneEquations:
                 continue
             step = self._damped_step(x, dx, F, zones, lo, hi, norms, raw)
             if step is None and np.max(np.abs(F)) <= _FLOOR:
+                if not fresh:               # an updated Jacobian: a fresh one may still step
+                    J = None
+                    continue
                 break                       # at the rounding floor of the residuals
             if step is not None and np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)) \
                     and np.max(np.abs(step[2])) <= _NEAR_FLOOR:

@@ -410,6 +410,27 @@ def test_next_to_a_merge_no_state_has_a_negative_pressure_or_gap(rel):
         assert np.min(g) >= -1e-9 * rise
 
 
+@pytest.mark.parametrize("rel", [-1e-6, -1e-8])
+def test_the_gap_between_two_zones_about_to_merge_is_where_the_closed_form_puts_it(rel):
+    """At (1 + rel) P* the W face's inner ends +-c, c = sqrt(1 - sqrt(s / 2)),
+    s = P |N11| / (pi A) (tests/reference/bem_reference.py ``w_face_closed_form``): the gap
+    between them closes like sqrt(-rel) (half-width 7.1e-5 at -1e-8) and the side conditions
+    lose their hold on it (their residuals go like its square): Newton ends at the
+    residuals' rounding floor only after a fresh Jacobian has failed to step too (an updated
+    one had stopped there with the inner ends 3.5e-5 off, half the gap)."""
+    k = contact.surface_constants(MAT, 0.0)
+    A = B.W_AMPLITUDE
+    punch = contact.ProfilePunch(lambda X: 4 * A * X * (X * X - 1.0), height=B.w_face,
+                                 face=B.W_FACE)
+    P = 2.0 * math.pi * A / abs(k.N11) * (1.0 + rel)
+    r = contact.solve(MAT, punch, load=P, speed=0.0)
+    want = B.w_face_closed_form(k.N11, P)
+    half_gap = want[1][0]
+    assert len(r.zones) == 2
+    for z, w in zip(r.zones, want):
+        assert z.ends == pytest.approx(w, abs=2e-3 * half_gap)
+
+
 def test_a_load_too_small_to_resolve_is_a_load_error():
     """The W face touches at X = +-1: at a load of 1e-100 its zones would be ~1e-50 wide,
     which X cannot resolve there; a LoadError says so (it was a ZeroDivisionError in
