@@ -116,6 +116,7 @@ class Face:
         self.homogeneous = None if homogeneous is None else (float(homogeneous[0]),
                                                              float(homogeneous[1]))
         self._dips = None
+        self._dip_slope = None
         self._scan = None
         self._opens = None
         self._lowest = {}           # m -> lowest_points(m)
@@ -465,13 +466,20 @@ class Face:
         between them unseen.  Computed once per face."""
         if self._dips is None:
             a, b = self.search_window()
-            X = self._window_samples(_DIP_SAMPLES)
-            dH = self.slope(X)
+            X, dH = self._dip_samples()
             out = [x for x in self.breaks if a < x < b]
             out += [self._slope_zero(X[k], X[k + 1])
                     for k in np.flatnonzero((dH[:-1] < 0) & (dH[1:] > 0)).tolist()]
             self._dips = np.array(sorted(out))
         return self._dips
+
+    def _dip_samples(self):
+        """(X, H'(X)) at ``_DIP_SAMPLES`` samples of the search window (:meth:`dips`), one
+        call of the slope for the valleys and the convexity test.  Computed once per face."""
+        if self._dip_slope is None:
+            X = self._window_samples(_DIP_SAMPLES)
+            self._dip_slope = (X, np.asarray(self.slope(X), dtype=float))
+        return self._dip_slope
 
     @property
     def opens_by_itself(self):
@@ -488,18 +496,19 @@ class Face:
 
     def _convex_at_samples(self):
         a, b = self.search_window()
-        X = self._window_samples(_DIP_SAMPLES)
+        Xw, sw = self._dip_samples()
+        # the scan's samples outside the window, and each break's two sides, where a slope
+        # that jumps down shows it
         lo, hi = self.extent
-        if not (math.isfinite(lo) and math.isfinite(hi)):
-            X = np.union1d(X, self.scan().X)
-        # each break's two sides, where a slope that jumps down shows it
-        for x in self.breaks:
-            h = 1e-9 * max(abs(x), b - a)
-            X = np.union1d(X, [x - h, x + h])
-        X = X[(X >= lo) & (X <= hi)]
-        s = np.asarray(self.slope(X), dtype=float)
+        extra = [] if math.isfinite(lo) and math.isfinite(hi) else [self.scan().X]
+        extra += [[x - h, x + h] for x in self.breaks for h in [1e-9 * max(abs(x), b - a)]]
+        Xe = np.setdiff1d(np.concatenate(extra) if extra else np.zeros(0), Xw)
+        Xe = Xe[(Xe >= lo) & (Xe <= hi)]
+        X = np.concatenate([Xw, Xe])
+        s = np.concatenate([sw, np.asarray(self.slope(Xe), dtype=float) if Xe.size else []])
+        order = np.argsort(X, kind="stable")
         top = float(np.max(np.abs(s[(X >= a) & (X <= b)]), initial=0.0))
-        return bool(np.all(np.diff(s) >= -1e-12 * top))
+        return bool(np.all(np.diff(s[order]) >= -1e-12 * top))
 
     def sample_points(self, zones, m):
         """The points outside the zones where the gap is checked, ascending: m samples of

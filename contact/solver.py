@@ -540,6 +540,7 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, mate
     results, events = [], []
     n_start = eq.n
     for i, state in enumerate(states):
+        refined = state
         if adaptive:
             # a load curve starts each load's doubling at half the n the previous one needed
             refined = _refine(face, eq, state, tol, punch, n_start)
@@ -556,17 +557,15 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, mate
                 # truncation; at the refined n it violates p >= 0 or the gap: follow the
                 # load again at that n (its checks are then as tight as the answer)
                 refined = _refollow(face, eq, refined, loads, len(results), tol, punch)
-            events.extend(state.events)
-            state = refined
-            n_start = max(eq.n, _basis_size(state) // 2)
-        else:
-            events.extend(state.events)
-        sol = state.solution
-        zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(state.zones))
+            n_start = max(eq.n, _basis_size(refined) // 2)
+        events.extend(state.events)         # those the continuation located on its way
+        sol = refined.solution
+        zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(refined.zones))
         integral = sum(z.load for z in zones)
         results.append(ContactResult(
-            zones=zones, n=_basis_size(state), load_check=abs(integral - state.load) / state.load,
-            constants=const, load=state.load, speed=speed, friction=friction,
+            zones=zones, n=_basis_size(refined),
+            load_check=abs(integral - refined.load) / refined.load,
+            constants=const, load=refined.load, speed=speed, friction=friction,
             direction=direction, mu_f=mu_f, punch=punch, method="numeric", solution=sol,
             material=material))
     return LoadCurve(loads=np.array(loads, dtype=float), results=tuple(results),

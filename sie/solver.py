@@ -30,12 +30,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from .assembly import assemble_and_solve, operator_images, probe_kernel
-from .errors import (CallableOutputError, InconsistentEquationWarning,
-                     InvalidBreakpointError, InvalidOrderError, ResidualWarning,
-                     SideConditionError, call_checked, check_finite_real, check_order,
-                     real_array)
+from .errors import (CallableOutputError, InconsistentEquationWarning, InvalidOrderError,
+                     ResidualWarning, SideConditionError, call_checked, check_finite_real,
+                     check_order)
 from .exponents import Exponents, check_coefficients, check_end, exponents_of
-from .intervals import Interval, check_intervals, per_interval, split_breaks
+from .intervals import UNIT, Interval, check_intervals, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
 from .quadrature import composite_rule
@@ -548,7 +547,7 @@ class FunctionalsRule:
         self._h = h
         self._q_pieces = u.m_eq + _EXTRA_PER_PIECE        # nodes per piece, as solve's
         x = rule.x
-        p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)   # P_1^{(-alpha,-beta)}
+        p1 = _p1(e, x)
         p_end = rule.end_values(2) if rule.end else np.zeros(2)
         self.nodes = x
         self.end = rule.end
@@ -562,7 +561,7 @@ class FunctionalsRule:
             return Functionals(None, None, e.alpha, e.beta, 1)
         _check_callable("f", f, "vectorised callable f(s)")
         if np.size(breaks):
-            return self._with_breaks(f, _unit_breaks(breaks))
+            return self._with_breaks(f, split_breaks(breaks, UNIT)[0])
         fs = call_checked(f, "f", (self.nodes,), self.nodes.shape)
         f_end = 0.0
         if self.end:
@@ -581,16 +580,10 @@ class FunctionalsRule:
         f0 = float(np.sum(wf)) / self._h[0]
         if self.kappa == 0:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
-        p1 = (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)
-        f1 = float(wf @ p1) / self._h[1]
+        f1 = float(wf @ _p1(e, x)) / self._h[1]
         return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
 
 
-def _unit_breaks(breaks):
-    """Breaks inside (-1, 1), ascending and distinct; InvalidBreakpointError otherwise."""
-    br = real_array("breaks", breaks, InvalidBreakpointError).ravel()
-    if not (np.all(np.isfinite(br)) and np.all(np.abs(br) < 1.0)):
-        raise InvalidBreakpointError(
-            f"breaks must be finite and lie strictly inside (-1, 1), got {br.tolist()}")
-    br = np.sort(br)
-    return br[np.concatenate(([True], np.diff(br) > 0.0))]
+def _p1(e, x):
+    """P_1^{(-alpha,-beta)}(x), the second function the projections are taken on."""
+    return (1.0 - e.alpha) + 0.5 * (2.0 - e.alpha - e.beta) * (x - 1.0)
