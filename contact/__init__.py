@@ -3,7 +3,8 @@
 Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
 moving punch", Arch. Mech. 66 (2014), corrected (see the documentation, Theory: errata of
 Zhou et al. 2014) and generalised:
-any orthotropic material, any punch profile, both directions of sliding.  The numerical
+any orthotropic material (or any material of one's own with the methods of the
+:class:`Material` protocol), any punch profile, both directions of sliding.  The numerical
 path goes through :func:`sie.solve`; the paper's closed forms (corrected) are available as
 ``method="closed_form"`` and serve as regression oracles.
 """
@@ -14,6 +15,7 @@ from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
                      NearRayleighWarning, ProfileCallableError, PunchGeometryError, SpeedError,
                      StressPointError, UnboundedStressError)
 from .material import Isotropic, Orthotropic, zhou2014
+from .protocol import Material, MaterialModes
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
 from .result import ContactZone, LoadCurve
@@ -22,7 +24,7 @@ from .solver import ContactResult, contact_length, load_curve, solve, solve_batc
 from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 
 __all__ = [
-    "Orthotropic", "Isotropic", "zhou2014",
+    "Material", "MaterialModes", "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
     "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "Event",

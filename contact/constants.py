@@ -1,4 +1,10 @@
-"""Surface constants N11, N12, N21, N22 of a moving orthotropic half-space, and its Rayleigh speed.
+"""Surface constants N11, N12, N21, N22 of a moving half-space, and its Rayleigh speed.
+
+The public entries :func:`surface_constants`, :func:`rayleigh_speed` and
+:func:`limiting_speed` take any material (:class:`contact.Material`): they check it, the
+speed, and what its methods return.  The formulas below are those of an orthotropic
+material (:func:`orthotropic_surface_constants`, :func:`orthotropic_rayleigh_speed`,
+:func:`orthotropic_limiting_speed`), which :class:`contact.Orthotropic`'s methods call.
 
 Conventions (see the documentation, Theory: the contact model and its conventions):
 half-space Y < 0, surface tractions sigma_YY(X, 0) = -p(X), tau_XY(X, 0) = -q(X),
@@ -49,16 +55,21 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import NearRayleighWarning, SpeedError
-from .material import Orthotropic, check_speed
+from .errors import MaterialError, NearRayleighWarning, SpeedError, check_finite
+from .protocol import call, check_material, describe_call
 
 __all__ = [
     "SurfaceConstants",
     "surface_constants",
+    "rayleigh_speed",
+    "limiting_speed",
+    "check_speed",
+    "check_subrayleigh",
     "root_symmetric_functions",
     "rayleigh_function",
-    "limiting_speed",
-    "rayleigh_speed",
+    "orthotropic_surface_constants",
+    "orthotropic_rayleigh_speed",
+    "orthotropic_limiting_speed",
     "NEAR_RAYLEIGH_FRACTION",
 ]
 
@@ -70,8 +81,9 @@ NEAR_RAYLEIGH_FRACTION = 0.99
 class SurfaceConstants:
     """Surface constants of eqs. (4.5)-(4.6) of Zhou et al. 2014 at one relative speed.
 
-    Returned by :func:`surface_constants`; :func:`contact.solve` accepts one as
-    ``constants=`` (a sweep over friction at one speed shares it).
+    Returned by :func:`surface_constants` (and by a material's ``surface_constants(c)``,
+    :class:`contact.Material`); :func:`contact.solve` accepts one as ``constants=`` (a sweep
+    over friction at one speed shares it).
 
     Attributes
     ----------
@@ -80,18 +92,20 @@ class SurfaceConstants:
     N21, N22 : float
         sigma_XX(X, 0) = N21 p + N22 Hc[q]  (dimensionless).
     c : float
-        Relative speed V / sqrt(C33 / rho).
-    eta_product, eta_sum : float
-        P = eta1 eta2 and S = eta1 + eta2 of the two decaying characteristic roots.
-    rayleigh_denominator : float
-        Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11' (> 0 below c_R).
+        Relative speed (V / sqrt(C33 / rho) for an orthotropic material).
     rayleigh_speed : float
         c_R of the material.
+    eta_product, eta_sum : float or None
+        P = eta1 eta2 and S = eta1 + eta2 of the two decaying characteristic roots of an
+        orthotropic material (eq. (3.1)); None for a material without them.
+    rayleigh_denominator : float or None
+        Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11' of an orthotropic material (> 0
+        below c_R); None for a material without it.
 
     References
     ----------
     Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6); the formulas in closed form
-    through P and S: see :func:`surface_constants` and the module docstring.
+    through P and S: see :func:`orthotropic_surface_constants` and the module docstring.
 
     Examples
     --------
@@ -101,6 +115,13 @@ class SurfaceConstants:
     >>> sc = contact.surface_constants(contact.Isotropic(2.5, 0.25), 0.0)
     >>> type(sc).__name__, sc.c, sc.eta_product, sc.eta_sum
     ('SurfaceConstants', 0.0, 1.0, 2.0)
+
+    A material of one's own gives the four constants, its speed and c_R, and may leave the
+    orthotropic quantities out:
+
+    >>> contact.SurfaceConstants(N11=-0.75, N12=0.25, N21=-1.0, N22=-2.0, c=0.0,
+    ...                          rayleigh_speed=0.9194).eta_sum is None
+    True
     """
 
     N11: float
@@ -108,18 +129,244 @@ class SurfaceConstants:
     N21: float
     N22: float
     c: float
-    eta_product: float
-    eta_sum: float
-    rayleigh_denominator: float
     rayleigh_speed: float
+    eta_product: float | None = None
+    eta_sum: float | None = None
+    rayleigh_denominator: float | None = None
 
 
-def root_symmetric_functions(material: Orthotropic, c) -> tuple[float, float]:
+# --------------------------------------------------------------------------
+# any material: the checked entries
+# --------------------------------------------------------------------------
+def check_speed(c, c_R: float | None = None) -> float:
+    """Return the relative speed ``c`` as a float; raise SpeedError unless it is finite,
+    >= 0 and, when the Rayleigh speed ``c_R`` is given, below it."""
+    c = check_finite("relative speed c", c, SpeedError)
+    if c < 0.0:
+        raise SpeedError(f"relative speed c must be >= 0 (the punch's speed over the "
+                         f"material's shear wave speed, V / sqrt(C33/rho) for an orthotropic "
+                         f"material), got {c!r}")
+    if c_R is not None and not c < c_R:
+        raise SpeedError(
+            f"relative speed c must be below the Rayleigh speed c_R = {c_R!r} of this material "
+            f"(allowed: 0 <= c < c_R), got c = {c!r}")
+    return c
+
+
+def check_subrayleigh(material, c, stacklevel: int = 3) -> tuple[float, float]:
+    """(c, c_R): the relative speed checked against the material's Rayleigh speed.
+
+    Raises
+    ------
+    SpeedError
+        c not a finite number, negative, or not below c_R.
+
+    Warns
+    -----
+    NearRayleighWarning
+        c > :data:`NEAR_RAYLEIGH_FRACTION` c_R (``stacklevel`` as for ``warnings.warn``,
+        counted from this function).
+    """
+    c_R = rayleigh_speed(material)
+    c = check_speed(c, c_R)
+    if c > NEAR_RAYLEIGH_FRACTION * c_R:
+        warnings.warn(
+            f"relative speed c = {c!r} is within 1% of the Rayleigh speed c_R = {c_R!r}: "
+            f"the surface constants are valid but extremely sensitive to c",
+            NearRayleighWarning, stacklevel=stacklevel)
+    return c, c_R
+
+
+def rayleigh_speed(material) -> float:
+    """Relative Rayleigh speed c_R of a material: the admissible speeds are 0 <= c < c_R.
+
+    For an orthotropic material, the first zero of the common denominator of the surface
+    constants (:func:`orthotropic_rayleigh_speed`, :func:`rayleigh_function`).
+    Zhou et al. 2014 material: c_R = 0.9936147...; isotropic nu = 0.25: 0.9194017...
+    (the paper, Sec. 6.1, gives [0, 1): see the documentation, Theory: errata of Zhou
+    et al. 2014).
+
+    Parameters
+    ----------
+    material : Material
+        :class:`contact.Orthotropic` or any object with the methods of
+        :class:`contact.Material`.
+
+    Returns
+    -------
+    float
+        ``material.rayleigh_speed()``, checked: a finite real number > 0.
+
+    Raises
+    ------
+    ContactInputError
+        ``material`` lacks the methods of :class:`contact.Material`.
+    MaterialError
+        Its ``rayleigh_speed()`` does not return a finite real number > 0, or raises.
+
+    References
+    ----------
+    Lord Rayleigh, "On waves propagated along the plane surface of an elastic solid",
+    Proc. London Math. Soc. 17 (1885) 4-11 (isotropic: c_R^2 = 2 - 2/sqrt(3) at nu = 1/4).
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6).
+
+    Examples
+    --------
+    >>> import math, contact
+    >>> c_R = contact.rayleigh_speed(contact.Isotropic(1.0, 0.25))
+    >>> round(c_R, 12), round(math.sqrt(2.0 - 2.0 / math.sqrt(3.0)), 12)
+    (0.919401686762, 0.919401686762)
+    >>> round(contact.rayleigh_speed(contact.zhou2014()), 6)
+    0.993615
+    """
+    check_material(material)
+    c_R = call(material, "rayleigh_speed")
+    return _positive(c_R, material, "rayleigh_speed")
+
+
+def limiting_speed(material) -> float:
+    """Lowest relative speed at which a mode of the material stops decaying into the
+    half-space (for an orthotropic material, a characteristic root reaches the imaginary
+    axis: :func:`orthotropic_limiting_speed`).
+
+    Parameters
+    ----------
+    material : Material
+        :class:`contact.Orthotropic` or any object with the methods of
+        :class:`contact.Material`.
+
+    Returns
+    -------
+    float
+        ``material.limiting_speed()``, checked: a finite real number, at least
+        :func:`rayleigh_speed`.
+
+    Raises
+    ------
+    ContactInputError
+        ``material`` lacks the methods of :class:`contact.Material`.
+    MaterialError
+        Its ``limiting_speed()`` is not a finite real number >= its Rayleigh speed, or
+        raises.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (3.1) and Table 1 (the roots against c).
+
+    Examples
+    --------
+    For the paper's material the shear wave (c = 1) comes first.  For C11 = C22 = C33 = 1,
+    C12 = 0.9: S^2 = 0.39 - 4 c^2, which vanishes at c^2 = 0.0975:
+
+    >>> import math, contact
+    >>> contact.limiting_speed(contact.zhou2014())
+    1.0
+    >>> m = contact.Orthotropic(1.0, 0.9, 1.0, 1.0)
+    >>> round(contact.limiting_speed(m) / math.sqrt(0.0975), 12)
+    1.0
+    """
+    c_R = rayleigh_speed(material)
+    c_L = _positive(call(material, "limiting_speed"), material, "limiting_speed")
+    if not c_L >= c_R:
+        raise MaterialError(
+            f"{describe_call(material, 'limiting_speed')} returned {c_L!r}, below its Rayleigh "
+            f"speed {c_R!r} (allowed: c_R <= c_L: below c_L every mode decays into the "
+            f"half-space, and c_R is below c_L)")
+    return c_L
+
+
+def surface_constants(material, c) -> SurfaceConstants:
+    """Surface constants N11, N12, N21, N22 of a material at the relative speed ``c``.
+
+    dv/dX (X, 0) = N12 q + N11 Hc[p] and sigma_XX (X, 0) = N21 p + N22 Hc[q] (Zhou et al.
+    2014, eqs. (4.5)-(4.6); for an orthotropic material the closed forms of
+    :func:`orthotropic_surface_constants`).
+
+    Parameters
+    ----------
+    material : Material
+        :class:`contact.Orthotropic` or any object with the methods of
+        :class:`contact.Material`.
+    c : float
+        Relative speed (V / sqrt(C33 / rho) for an orthotropic material), 0 <= c < c_R.
+
+    Returns
+    -------
+    SurfaceConstants
+        ``material.surface_constants(c)``, checked.
+
+    Raises
+    ------
+    ContactInputError
+        ``material`` lacks the methods of :class:`contact.Material`.
+    SpeedError
+        If c is not finite, negative, or not below the Rayleigh speed c_R.
+    MaterialError
+        The material's ``surface_constants(c)`` returns something other than a
+        :class:`SurfaceConstants` of finite real N's with N11 < 0, for this c and its
+        c_R, or raises (or its ``rayleigh_speed()`` is not admissible).
+
+    Warns
+    -----
+    NearRayleighWarning
+        If c > 0.99 c_R.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6).
+
+    Examples
+    --------
+    The isotropic static limit (plane strain, shear modulus G, Poisson's ratio nu):
+    N11 = -(1 - nu)/G, N12 = (1 - 2 nu)/(2G), N21 = -1, N22 = -2; here G = 1, nu = 1/4:
+
+    >>> import contact
+    >>> sc = contact.surface_constants(contact.Isotropic(2.5, 0.25), 0.0)
+    >>> [round(v, 12) for v in (sc.N11, sc.N12, sc.N21, sc.N22)]
+    [-0.75, 0.25, -1.0, -2.0]
+    """
+    c, c_R = check_subrayleigh(material, c)
+    sc = call(material, "surface_constants", c)
+    where = describe_call(material, "surface_constants", c)
+    if not isinstance(sc, SurfaceConstants):
+        raise MaterialError(f"{where} must return a contact.SurfaceConstants, got "
+                            f"{type(sc).__name__}")
+    for name in ("N11", "N12", "N21", "N22"):
+        check_finite(f"{name} of {where}", getattr(sc, name), MaterialError)
+    for name in ("eta_product", "eta_sum", "rayleigh_denominator"):
+        if getattr(sc, name) is not None:
+            check_finite(f"{name} of {where}", getattr(sc, name), MaterialError)
+    if not sc.N11 < 0.0:
+        raise MaterialError(
+            f"N11 of {where} must be < 0 (below the Rayleigh speed the surface sinks under a "
+            f"pressure: dv/dX = N11 Hc[p] + ...; N11 changes sign at c_R), got {sc.N11!r}")
+    if sc.c != c or sc.rayleigh_speed != c_R:
+        raise MaterialError(
+            f"{where} returned constants for c = {sc.c!r} with rayleigh_speed = "
+            f"{sc.rayleigh_speed!r} (allowed: c = {c!r}, the speed asked, and the material's "
+            f"rayleigh_speed() = {c_R!r})")
+    return sc
+
+
+def _positive(value, material, method: str) -> float:
+    """A speed returned by ``material.<method>()`` as a float, or MaterialError."""
+    where = describe_call(material, method)
+    v = check_finite(f"{where} (a relative speed)", value, MaterialError)
+    if not v > 0.0:
+        raise MaterialError(f"{where} must return a relative speed > 0, got {v!r}")
+    return v
+
+
+# --------------------------------------------------------------------------
+# the orthotropic formulas (what contact.Orthotropic's methods call)
+# --------------------------------------------------------------------------
+def root_symmetric_functions(material, c) -> tuple[float, float]:
     """P = eta1 eta2 and S = eta1 + eta2 of the decaying roots of eq. (3.1), Zhou et al. 2014.
 
-    Computed from the coefficients of a eta^4 + b eta^2 + d = 0 only: P = sqrt(d/a),
-    S = sqrt(2P - b/a).  Valid for 0 <= c below the limiting speed (see
-    :func:`limiting_speed`), where d >= 0 and 2P - b/a >= 0; outside, NaN may result.
+    Computed from the coefficients of a eta^4 + b eta^2 + d = 0 only (``material`` an
+    :class:`contact.Orthotropic`): P = sqrt(d/a), S = sqrt(2P - b/a).  Valid for 0 <= c
+    below the limiting speed (see :func:`orthotropic_limiting_speed`), where d >= 0 and
+    2P - b/a >= 0; outside, NaN may result.
     """
     a, b, d = material.characteristic_coefficients(c)
     P = math.sqrt(d / a) if d > 0.0 else 0.0
@@ -128,11 +375,13 @@ def root_symmetric_functions(material: Orthotropic, c) -> tuple[float, float]:
     return P, S
 
 
-def rayleigh_function(material: Orthotropic, c) -> float:
-    """The common denominator Delta(c) of the surface constants (a Rayleigh function).
+def rayleigh_function(material, c) -> float:
+    """The common denominator Delta(c) of the orthotropic surface constants (a Rayleigh
+    function).
 
-    Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11', C11' = C11 - C33 c^2, P = eta1 eta2.
-    Delta(0) = P (C11 C22 - C12^2) > 0; its first zero is the Rayleigh speed c_R.
+    Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11', C11' = C11 - C33 c^2, P = eta1 eta2
+    (``material`` an :class:`contact.Orthotropic`).  Delta(0) = P (C11 C22 - C12^2) > 0;
+    its first zero is the Rayleigh speed c_R.
     """
     P, _ = root_symmetric_functions(material, c)
     c2 = float(c) ** 2
@@ -140,7 +389,7 @@ def rayleigh_function(material: Orthotropic, c) -> float:
     return P * (material.C22 * C11p - material.C12 ** 2) - material.C33 * c2 * C11p
 
 
-def _scaled_rayleigh_function(material: Orthotropic, c: float) -> float:
+def _scaled_rayleigh_function(material, c: float) -> float:
     """Delta(c) / sqrt(C11'): same sign as Delta below the limiting speed, without the trivial
     zero of Delta at C11' = 0 (c^2 = C11/C33 < 1)."""
     c2 = c * c
@@ -149,14 +398,15 @@ def _scaled_rayleigh_function(material: Orthotropic, c: float) -> float:
             - material.C33 * c2 * math.sqrt(C11p))
 
 
-def _eta_sum_squared(material: Orthotropic, c: float) -> float:
+def _eta_sum_squared(material, c: float) -> float:
     a, b, d = material.characteristic_coefficients(c)
     return 2.0 * math.sqrt(max(d, 0.0) / a) - b / a
 
 
 @functools.lru_cache(maxsize=256)
-def limiting_speed(material: Orthotropic) -> float:
-    """Lowest relative speed at which a decaying root reaches the imaginary axis.
+def orthotropic_limiting_speed(material) -> float:
+    """Lowest relative speed at which a decaying root of an orthotropic material reaches the
+    imaginary axis (:meth:`contact.Orthotropic.limiting_speed`).
 
     The smallest of 1 (shear wave, d = 0), sqrt(C11/C33) (longitudinal wave, d = 0) and the
     speed where eta1 + eta2 = 0 (a complex pair eta^2 becomes a negative double root).
@@ -176,18 +426,6 @@ def limiting_speed(material: Orthotropic) -> float:
     ----------
     Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (3.1) and Table 1 (the roots against c);
     a, b, d as in :meth:`contact.Orthotropic.characteristic_coefficients`.
-
-    Examples
-    --------
-    For the paper's material the shear wave (c = 1) comes first.  For C11 = C22 = C33 = 1,
-    C12 = 0.9: S^2 = 0.39 - 4 c^2, which vanishes at c^2 = 0.0975:
-
-    >>> import math, contact
-    >>> contact.limiting_speed(contact.zhou2014())
-    1.0
-    >>> m = contact.Orthotropic(1.0, 0.9, 1.0, 1.0)
-    >>> round(contact.limiting_speed(m) / math.sqrt(0.0975), 12)
-    1.0
     """
     c_max = min(1.0, math.sqrt(material.C11 / material.C33))
     if _eta_sum_squared(material, c_max) >= 0.0:
@@ -196,16 +434,14 @@ def limiting_speed(material: Orthotropic) -> float:
 
 
 @functools.lru_cache(maxsize=256)
-def rayleigh_speed(material: Orthotropic) -> float:
-    """Relative Rayleigh speed c_R: the first zero of :func:`rayleigh_function`.
+def orthotropic_rayleigh_speed(material) -> float:
+    """Relative Rayleigh speed c_R of an orthotropic material: the first zero of
+    :func:`rayleigh_function` (:meth:`contact.Orthotropic.rayleigh_speed`).
 
     Delta > 0 at c = 0 and Delta <= 0 at the limiting speed c_L <= 1 (a subsonic surface wave
     exists for an orthotropic half-space; also checked on 20000 random stiffnesses, each with
     a single sign change of Delta on (0, c_L)), so c_R is bracketed in (0, c_L] and found
     by bisection on Delta / sqrt(C11') to about one ulp (:func:`_decreasing_root`).
-    Zhou et al. 2014 material: c_R = 0.9936147...; isotropic nu = 0.25: 0.9194017...
-    The admissible speeds are 0 <= c < c_R (the paper, Sec. 6.1, gives [0, 1): see the
-    documentation, Theory: errata of Zhou et al. 2014).
 
     Parameters
     ----------
@@ -218,21 +454,10 @@ def rayleigh_speed(material: Orthotropic) -> float:
 
     References
     ----------
-    Lord Rayleigh, "On waves propagated along the plane surface of an elastic solid",
-    Proc. London Math. Soc. 17 (1885) 4-11 (isotropic: c_R^2 = 2 - 2/sqrt(3) at nu = 1/4).
-    Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6) (Delta is the common
-    denominator of the surface constants).
-
-    Examples
-    --------
-    >>> import math, contact
-    >>> c_R = contact.rayleigh_speed(contact.Isotropic(1.0, 0.25))
-    >>> round(c_R, 12), round(math.sqrt(2.0 - 2.0 / math.sqrt(3.0)), 12)
-    (0.919401686762, 0.919401686762)
-    >>> round(contact.rayleigh_speed(contact.zhou2014()), 6)
-    0.993615
+    Lord Rayleigh, Proc. London Math. Soc. 17 (1885) 4-11; Zhou, Lee & Jang, Arch. Mech.
+    66 (2014), eqs. (4.4)-(4.6) (Delta is the common denominator of the surface constants).
     """
-    c_lim = limiting_speed(material)
+    c_lim = orthotropic_limiting_speed(material)
     f = functools.partial(_scaled_rayleigh_function, material)
     if f(c_lim) >= 0.0:  # exceptional limiting wave that is itself traction free
         return c_lim
@@ -262,23 +487,9 @@ def _decreasing_root(f, lo: float, hi: float) -> float:
     return float(a if abs(f(a)) < abs(f(b)) else b)
 
 
-def _check_subrayleigh(material: Orthotropic, c) -> tuple[float, float]:
-    c = check_speed(c)
-    c_R = rayleigh_speed(material)
-    if not c < c_R:
-        raise SpeedError(
-            f"relative speed c must be below the Rayleigh speed c_R = {c_R!r} of this material "
-            f"(allowed: 0 <= c < c_R), got c = {c!r}")
-    if c > NEAR_RAYLEIGH_FRACTION * c_R:
-        warnings.warn(
-            f"relative speed c = {c!r} is within 1% of the Rayleigh speed c_R = {c_R!r}: "
-            f"the surface constants are valid but extremely sensitive to c",
-            NearRayleighWarning, stacklevel=3)
-    return c, c_R
-
-
-def surface_constants(material: Orthotropic, c) -> SurfaceConstants:
-    """Surface constants N11, N12, N21, N22 of Zhou et al. 2014, eqs. (4.4)-(4.6).
+def orthotropic_surface_constants(material, c) -> SurfaceConstants:
+    """Surface constants of an orthotropic material, Zhou et al. 2014, eqs. (4.4)-(4.6)
+    (:meth:`contact.Orthotropic.surface_constants`).
 
     Parameters
     ----------
@@ -303,30 +514,17 @@ def surface_constants(material: Orthotropic, c) -> SurfaceConstants:
     Raises
     ------
     SpeedError
-        If c is not finite, negative, or not below the Rayleigh speed c_R.
-
-    Warns
-    -----
-    NearRayleighWarning
-        If c > 0.99 c_R.
+        If c is not finite, negative, or not below the Rayleigh speed c_R (the checked
+        entry :func:`surface_constants` also warns near c_R).
 
     References
     ----------
     Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6), rewritten through
     P = eta1 eta2 and S = eta1 + eta2 (module docstring): the paper's form divides by
     eta1 - eta2 and by C12 + C33 and is singular at isotropy.
-
-    Examples
-    --------
-    The isotropic static limit (plane strain, shear modulus G, Poisson's ratio nu):
-    N11 = -(1 - nu)/G, N12 = (1 - 2 nu)/(2G), N21 = -1, N22 = -2; here G = 1, nu = 1/4:
-
-    >>> import contact
-    >>> sc = contact.surface_constants(contact.Isotropic(2.5, 0.25), 0.0)
-    >>> [round(v, 12) for v in (sc.N11, sc.N12, sc.N21, sc.N22)]
-    [-0.75, 0.25, -1.0, -2.0]
     """
-    c, c_R = _check_subrayleigh(material, c)
+    c_R = orthotropic_rayleigh_speed(material)
+    c = check_speed(c, c_R)
     C11, C12, C22, C33 = material.C11, material.C12, material.C22, material.C33
     c2 = c * c
     C11p = C11 - C33 * c2
@@ -339,8 +537,8 @@ def surface_constants(material: Orthotropic, c) -> SurfaceConstants:
         N21=-(C11p * (det - C12 * C33 * c2) - C12 * C22 * C33 * c2 * P) / (C22 * delta),
         N22=-P * S * det / delta,
         c=c,
+        rayleigh_speed=c_R,
         eta_product=P,
         eta_sum=S,
         rayleigh_denominator=delta,
-        rayleigh_speed=c_R,
     )

@@ -33,8 +33,8 @@ class ContactInputError(ValueError):
     """Base class: an argument of a :mod:`contact` function is not admissible.
 
     Every input error of :mod:`contact` derives from it (and from ``ValueError``); raised as
-    such for arguments of the wrong type (a material that is not an
-    :class:`~contact.Orthotropic`, a punch that is not a :class:`~contact.Punch`), an
+    such for arguments of the wrong type (a material without the methods of
+    :class:`~contact.Material`, a punch that is not a :class:`~contact.Punch`), an
     unknown ``method``, ``n`` or ``tol`` out of range, a bad region or grid of
     :meth:`contact.ContactResult.stress_extrema`.
 
@@ -44,15 +44,21 @@ class ContactInputError(ValueError):
     >>> contact.solve("steel", contact.FlatPunch(1.0), load=1.0, speed=0.0)
     Traceback (most recent call last):
         ...
-    contact.errors.ContactInputError: material must be a contact.Orthotropic (or contact.Isotropic(...)), got str
+    contact.errors.ContactInputError: material must have the methods surface_constants(c), ..., got str, which lacks surface_constants, rayleigh_speed, limiting_speed, relative_speed, half_space_modes
     """
 
 
 class MaterialError(ContactInputError):
-    """Stiffnesses not finite, or not positive definite; density not positive.
+    """Stiffnesses not finite, or not positive definite; density not positive; a material's
+    method returning what is not admissible.
 
     Raised by :class:`~contact.Orthotropic` and :func:`~contact.Isotropic` (C11, C22, C33 > 0,
     C11 C22 > C12^2, rho > 0; -1 < nu < 1/2), and where a density is needed but absent.
+    Raised for a material of one's own (:class:`~contact.Material`) whose method returns
+    what is not admissible (constants that are NaN or not real, N11 >= 0, a Rayleigh speed
+    that is not > 0, modes without ``points`` and ``stresses``, points off the upper
+    half-plane, stresses that are NaN) or raises an exception that is not a
+    :class:`ContactInputError`: the message names the method.
 
     Examples
     --------

@@ -1,5 +1,10 @@
 """Orthotropic plane-strain materials and the characteristic roots of Zhou et al. (2014).
 
+:class:`Orthotropic` is a :class:`contact.Material`: its methods ``surface_constants(c)``,
+``rayleigh_speed()``, ``limiting_speed()``, ``relative_speed(V)`` and
+``half_space_modes(c)`` are the orthotropic formulas of :mod:`contact.constants` and
+:mod:`contact.subsurface`.
+
 Stress-strain law (Zhou, Lee & Jang 2014, eq. (2.2), plane strain, C13 = C23 = 0)::
 
     sigma_xx = C11 u_x + C12 v_y,   sigma_yy = C12 u_x + C22 v_y,   tau_xy = C33 (u_y + v_x).
@@ -24,17 +29,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .constants import (SurfaceConstants, check_speed, orthotropic_limiting_speed,
+                        orthotropic_rayleigh_speed, orthotropic_surface_constants,
+                        root_symmetric_functions)
 from .errors import MaterialError, SpeedError, check_finite
+from .subsurface import HalfSpaceModes
 
 __all__ = ["Orthotropic", "Isotropic", "zhou2014", "check_speed"]
-
-
-def check_speed(c) -> float:
-    """Return the relative speed ``c`` as a float; raise SpeedError unless it is finite and >= 0."""
-    c = check_finite("relative speed c", c, SpeedError)
-    if c < 0.0:
-        raise SpeedError(f"relative speed c must be >= 0 (c = V / sqrt(C33/rho)), got {c!r}")
-    return c
 
 
 def _check_positive(name: str, value) -> float:
@@ -75,7 +76,10 @@ class Orthotropic:
     sigma_xx = C11 u_x + C12 v_y, sigma_yy = C12 u_x + C22 v_y, tau_xy = C33 (u_y + v_x);
     the methods give the characteristic equation of the moving half-space
     (:meth:`characteristic_coefficients`, :meth:`characteristic_roots`), its decaying roots
-    and modes, and speeds (:attr:`shear_wave_speed`, :meth:`relative_speed`).
+    and modes, and speeds (:attr:`shear_wave_speed`, :meth:`relative_speed`).  With
+    :meth:`surface_constants`, :meth:`rayleigh_speed`, :meth:`limiting_speed` and
+    :meth:`half_space_modes` they make it a :class:`contact.Material`, which is all that
+    :func:`contact.solve` and the stress field use of it.
 
     References
     ----------
@@ -132,6 +136,41 @@ class Orthotropic:
         """Relative speed c = abs(V) / sqrt(C33/rho) of a punch moving at speed ``V``."""
         V = check_finite("speed V", V, SpeedError)
         return abs(V) / self.shear_wave_speed
+
+    def surface_constants(self, c) -> SurfaceConstants:
+        """N11, N12, N21, N22 at the relative speed ``c``, 0 <= c < c_R: the closed forms of
+        :func:`contact.constants.orthotropic_surface_constants` (Zhou et al. 2014, eqs.
+        (4.4)-(4.6), through eta1 eta2 and eta1 + eta2).  :func:`contact.surface_constants`
+        is the checked entry (it also warns near c_R).
+
+        Raises
+        ------
+        SpeedError
+            c not a finite number, negative, or not below :meth:`rayleigh_speed`.
+        """
+        return orthotropic_surface_constants(self, c)
+
+    def rayleigh_speed(self) -> float:
+        """Relative Rayleigh speed c_R, the first zero of the common denominator of the
+        surface constants (:func:`contact.constants.orthotropic_rayleigh_speed`, memoised)."""
+        return orthotropic_rayleigh_speed(self)
+
+    def limiting_speed(self) -> float:
+        """Lowest relative speed at which a decaying root reaches the imaginary axis
+        (:func:`contact.constants.orthotropic_limiting_speed`, memoised)."""
+        return orthotropic_limiting_speed(self)
+
+    def half_space_modes(self, c) -> HalfSpaceModes:
+        """The two decaying modes at the relative speed ``c``, 0 <= c < c_R, combined into
+        the coefficients of the stress field under the surface
+        (:class:`contact.subsurface.HalfSpaceModes`)."""
+        return HalfSpaceModes.of(self, c)
+
+    def root_symmetric_functions(self, c) -> tuple[float, float]:
+        """P = eta1 eta2 and S = eta1 + eta2 of the decaying roots, from the coefficients of
+        eq. (3.1) only (:func:`contact.constants.root_symmetric_functions`): well
+        conditioned where the roots themselves are not (near a double root)."""
+        return root_symmetric_functions(self, c)
 
     def characteristic_coefficients(self, c) -> tuple[float, float, float]:
         """Coefficients (a, b, d) of a eta^4 + b eta^2 + d = 0, Zhou et al. 2014, eq. (3.1).

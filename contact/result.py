@@ -119,8 +119,9 @@ class ContactResult:
         K_right = lim (x_r - X)^(-alpha) p(X) / 2^beta, K_left = lim (X - x_l)^(-beta) p(X) / 2^alpha.
         One corner (eqs. (5.23), (5.33)): K = lim |X - x_corner|^(-e) p(X), e its exponent.
     constants : SurfaceConstants
-    material : Orthotropic
-        The material it was solved for (with ``constants``, what :meth:`stress` needs).
+    material : Material
+        The material it was solved for (with ``constants``, what :meth:`stress` needs: its
+        ``half_space_modes``, :class:`contact.Material`).
     mu_f : float
         Signed friction coefficient -direction * friction.
     load, speed, friction, direction, punch
@@ -297,9 +298,11 @@ class ContactResult:
     def stress(self, X, Y):
         """The plane stresses at points (X, Y) of the half-space, Y <= 0 (moving frame).
 
-        sigma_c = Re{ KD_c D + KE_c E } from the Cauchy transform C(z) of p at
-        z_j = X - i eta_j Y over the two decaying roots eta_j of Zhou et al. 2014, eq. (3.1)
-        (D, E their divided difference and mean; the coefficients and their derivation:
+        The material's modes (``material.half_space_modes(c)``, :class:`contact.Material`)
+        combine the Cauchy transform C(z) of p at the complex points they name; for an
+        orthotropic material sigma_c = Re{ KD_c D + KE_c E } at z_j = X - i eta_j Y over the
+        two decaying roots eta_j of Zhou et al. 2014, eq. (3.1) (D, E their divided
+        difference and mean; the coefficients and their derivation:
         :mod:`contact.subsurface`), smooth through repeated roots; q = mu_f p adds its
         column only when mu_f != 0.  On Y = 0 the stresses are the tractions
         (sigma_YY = -p, sigma_XY = -q) and :meth:`sigma_xx`.
@@ -321,6 +324,10 @@ class ContactResult:
             NaN or infinite points, Y > 0.
         ContactInputError
             A point on Y = 0 at a singular contact end (the stress is infinite there).
+        MaterialError
+            The material's modes are not admissible (:func:`contact.subsurface.half_space_modes`,
+            :func:`~contact.subsurface.modes_points`,
+            :func:`~contact.subsurface.modes_stresses`).
 
         Examples
         --------
@@ -332,15 +339,16 @@ class ContactResult:
         >>> round(float(f.max_shear / p0), 3)
         0.3
         """
-        from .subsurface import StressField, stress_points
+        from .subsurface import StressField, modes_points, modes_stresses, stress_points
         X, Y = stress_points(X, Y)
         out = [np.zeros(X.shape) for _ in range(3)]
         below = Y < 0
         if np.any(below):
             modes = self._modes
+            Xb, Yb = X[below], Y[below]
             Cp = [np.asarray(self.solution.cauchy(z), dtype=complex)
-                  for z in modes.points(X[below], Y[below])]
-            for o, v in zip(out, modes.stresses(Cp, q_ratio=self.mu_f or None)):
+                  for z in modes_points(modes, Xb, Yb)]
+            for o, v in zip(out, modes_stresses(modes, Cp, None, self.mu_f or None, Xb, Yb)):
                 o[below] = v
         if not np.all(below):
             on = ~below
@@ -356,8 +364,8 @@ class ContactResult:
         if self.material is None:
             raise ContactInputError("this ContactResult carries no material: the field "
                                     "under the surface needs it (contact.solve sets it)")
-        from .subsurface import HalfSpaceModes
-        return HalfSpaceModes.of(self.material, self.constants.c)
+        from .subsurface import half_space_modes
+        return half_space_modes(self.material, self.constants.c)
 
     def stress_extrema(self, region=None, grid=(81, 61)):
         """Where the in-plane maximum shear and the largest tension (sigma_1) peak.

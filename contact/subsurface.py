@@ -1,4 +1,11 @@
-"""The stress field under the surface of the moving orthotropic half-space.
+"""The stress field under the surface of the moving half-space.
+
+:func:`half_space_stress` and :meth:`contact.ContactResult.stress` take any material
+(:class:`contact.Material`): its ``half_space_modes(c)`` (:class:`contact.MaterialModes`)
+says at which complex points the Cauchy transforms of the tractions are needed and how the
+stresses follow from them; :func:`half_space_modes`, :func:`modes_points` and
+:func:`modes_stresses` check what it returns.  :class:`HalfSpaceModes` is the orthotropic
+field, derived below.
 
 Conventions as for the surface (:mod:`contact.constants`): the half-space is Y < 0 in the
 frame moving with the punch, the tractions on Y = 0 are sigma_YY = -p, sigma_XY = -q, and
@@ -72,13 +79,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .constants import surface_constants
+from .constants import check_speed, check_subrayleigh
 from .errors import (CauchyTransformError, ContactInputError, FrictionError, MaterialError,
                      StressPointError, UnboundedStressError, check_finite, real_array)
-from .material import Orthotropic
+from .protocol import call, check_material, describe_call
 
 __all__ = ["HalfSpaceModes", "StressField", "StressExtrema", "Extremum", "half_space_stress",
-           "field_extrema", "StressPointError", "UnboundedStressError", "CauchyTransformError"]
+           "half_space_modes", "modes_points", "modes_stresses", "field_extrema",
+           "StressPointError", "UnboundedStressError", "CauchyTransformError"]
 
 #: |delta| below this fraction of eta_m: the repeated-root form (interpolation in delta^2)
 _NEAR = 1e-3
@@ -162,7 +170,7 @@ class StressField:
         return 0.5 * np.arctan2(2.0 * self.sigma_xy, self.sigma_xx - self.sigma_yy)
 
 
-def _modal_forms(material: Orthotropic, c: float) -> tuple:
+def _modal_forms(material, c: float) -> tuple:
     """Coefficients (of eta^0..eta^3) of (S_xx, S_yy, S_xy) for the two null vectors of the
     modal equations, (u, v) = (K eta, i (C33 eta^2 - C11')) (first row) and
     (C22 eta^2 - C33', -i K eta) (second row); module docstring."""
@@ -181,7 +189,7 @@ def _modal_forms(material: Orthotropic, c: float) -> tuple:
     return first, second, vec1, vec2
 
 
-def _stress_polynomials(material: Orthotropic, c: float) -> dict:
+def _stress_polynomials(material, c: float) -> dict:
     """S_xx, S_yy, S_xy of the modal vector e1 + w e2, w in {1, -1, i} chosen so that it is
     farthest from vanishing at both roots.  e1 and e2 are parallel at a root (both null
     vectors of a rank-one matrix), and each vanishes at one root when C12 + C33 = 0; their
@@ -234,8 +242,10 @@ class HalfSpaceModes:
     KE: np.ndarray
 
     @classmethod
-    def of(cls, material: Orthotropic, c: float) -> "HalfSpaceModes":
-        """The modes at relative speed c (0 <= c < c_R).
+    def of(cls, material, c: float) -> "HalfSpaceModes":
+        """The modes of an orthotropic material (:class:`contact.Orthotropic`) at relative
+        speed c (0 <= c < c_R), from its stiffnesses and the sum and product of its decaying
+        roots (:meth:`contact.Orthotropic.root_symmetric_functions`).
 
         Raises
         ------
@@ -245,12 +255,13 @@ class HalfSpaceModes:
             A double root with two independent modal vectors (C12 + C33 = 0 and
             C11'/C33 = C33'/C22), where the form used here does not apply.
         """
-        const = surface_constants(material, c)
-        em = 0.5 * const.eta_sum
-        d2 = 0.25 * const.eta_sum ** 2 - const.eta_product
+        c = check_speed(c, material.rayleigh_speed())
+        eta_product, eta_sum = material.root_symmetric_functions(c)
+        em = 0.5 * eta_sum
+        d2 = 0.25 * eta_sum ** 2 - eta_product
         delta = np.sqrt(complex(d2))
         a, b = em + delta, em - delta
-        S = _stress_polynomials(material, const.c)
+        S = _stress_polynomials(material, c)
         g = {"p": 1j * S["xy"], "q": S["yy"]}          # the traction rows: i S_xy p^, S_yy q^
         dyy, dxy = _divided(S["yy"], em, d2), _divided(S["xy"], em, d2)
         delta_p = _poly(S["xy"], b) * dyy - _poly(S["yy"], b) * dxy
@@ -329,6 +340,125 @@ class HalfSpaceModes:
         return 0.5 * (D1 + D2) + 0.5 * w * (D1 - D2), 0.5 * (E1 + E2) + 0.5 * w * (E1 - E2)
 
 
+def half_space_modes(material, c):
+    """The modes of a material at the relative speed ``c``, for the field under the surface.
+
+    The checked entry to ``material.half_space_modes(c)`` (:class:`contact.Material`), as
+    :func:`contact.surface_constants` is to ``material.surface_constants(c)``.
+
+    Parameters
+    ----------
+    material : Material
+        :class:`contact.Orthotropic` or any object with the methods of
+        :class:`contact.Material`.
+    c : float
+        Relative speed, 0 <= c < c_R.
+
+    Returns
+    -------
+    MaterialModes
+        What ``material.half_space_modes(c)`` returned (:class:`HalfSpaceModes` for an
+        orthotropic material), once it is seen to have the methods ``points`` and
+        ``stresses``; what those return is checked where they are called
+        (:func:`modes_points`, :func:`modes_stresses`).
+
+    Raises
+    ------
+    ContactInputError
+        ``material`` lacks the methods of :class:`contact.Material`.
+    SpeedError
+        ``c`` not a finite number in [0, c_R).
+    MaterialError
+        ``material.half_space_modes(c)`` raises, or returns an object without the methods
+        ``points(X, Y)`` and ``stresses(Cp, Cq, q_ratio)``.
+
+    Warns
+    -----
+    NearRayleighWarning
+        c > 0.99 c_R.
+    """
+    c, _ = check_subrayleigh(material, c)
+    modes = call(material, "half_space_modes", c)
+    if not (callable(getattr(modes, "points", None))
+            and callable(getattr(modes, "stresses", None))):
+        raise MaterialError(
+            f"{describe_call(material, 'half_space_modes', c)} must return the half-space's "
+            f"modes: an object with the methods points(X, Y) and stresses(Cp, Cq, q_ratio) "
+            f"(contact.MaterialModes), got {type(modes).__name__}")
+    return modes
+
+
+def modes_points(modes, X, Y) -> list:
+    """``modes.points(X, Y)`` (:class:`contact.MaterialModes`), checked: a list of complex
+    arrays of the shape of X and Y (float arrays of one shape, Y < 0), finite, in the upper
+    half-plane Im z > 0 where the Cauchy transforms of the tractions are analytic.
+
+    Raises
+    ------
+    MaterialError
+        Anything else, or an exception inside ``points`` (chained), naming ``points`` of
+        the modes' class.
+    """
+    Z = call(modes, "points", X, Y)
+    where = f"{type(modes).__name__}.points(X, Y) (the modes of material.half_space_modes(c))"
+    if isinstance(Z, np.ndarray) or not isinstance(Z, (list, tuple)) or not Z:
+        raise MaterialError(f"{where} must return a non-empty list of complex arrays, one per "
+                            f"point set, got {type(Z).__name__}")
+    out = []
+    for k, z in enumerate(Z):
+        z = np.asarray(z)
+        if z.shape != X.shape or z.dtype.kind != "c":
+            raise MaterialError(
+                f"{where} must return complex arrays of the points' shape {X.shape}, got "
+                f"entry {k} of shape {z.shape} and dtype {z.dtype}")
+        bad = ~(np.isfinite(z) & (z.imag > 0.0))
+        if bad.any():
+            i = int(np.flatnonzero(bad.ravel())[0])
+            raise MaterialError(
+                f"{where} must return finite points z with Im z > 0 (where the Cauchy "
+                f"transforms of the tractions are analytic), got z = "
+                f"{complex(z.ravel()[i])!r} in entry {k} for the point (X, Y) = "
+                f"({float(X.ravel()[i])!r}, {float(Y.ravel()[i])!r})")
+        out.append(z)
+    return out
+
+
+def modes_stresses(modes, Cp, Cq, q_ratio, X, Y) -> tuple:
+    """``modes.stresses(Cp, Cq, q_ratio)`` (:class:`contact.MaterialModes`), checked: three
+    real arrays of the shape of X and Y, finite wherever the transforms are.
+
+    Raises
+    ------
+    MaterialError
+        Anything else, or an exception inside ``stresses`` (chained), naming ``stresses``
+        of the modes' class and the first point at fault.
+    """
+    out = call(modes, "stresses", Cp, Cq, q_ratio)
+    where = (f"{type(modes).__name__}.stresses(Cp, Cq, q_ratio) (the modes of "
+             f"material.half_space_modes(c))")
+    if isinstance(out, np.ndarray) or not isinstance(out, (list, tuple)) or len(out) != 3:
+        raise MaterialError(f"{where} must return (sigma_xx, sigma_yy, sigma_xy), three real "
+                            f"arrays, got {type(out).__name__}")
+    given = np.ones(X.shape, dtype=bool)
+    for C in list(Cp) + list(Cq or ()):
+        given &= np.isfinite(C)
+    checked = []
+    for name, v in zip(("sigma_xx", "sigma_yy", "sigma_xy"), out):
+        v = np.asarray(v)
+        if v.shape != X.shape or v.dtype.kind not in "fiu":
+            raise MaterialError(f"{where} must return real arrays of the points' shape "
+                                f"{X.shape}, got {name} of shape {v.shape} and dtype {v.dtype}")
+        bad = ~np.isfinite(v) & given
+        if bad.any():
+            i = int(np.flatnonzero(bad.ravel())[0])
+            raise MaterialError(
+                f"{where} returned {name} = {float(v.ravel()[i])!r} at the point (X, Y) = "
+                f"({float(X.ravel()[i])!r}, {float(Y.ravel()[i])!r}), where the transforms "
+                f"are finite (allowed: finite stresses)")
+        checked.append(v.astype(float, copy=False))
+    return tuple(checked)
+
+
 def stress_points(X, Y):
     """X, Y as float arrays of one shape; raise StressPointError unless real numbers (not
     text, bools or complex: :func:`contact.errors.real_array`), finite, with Y <= 0."""
@@ -348,13 +478,15 @@ def stress_points(X, Y):
     return np.array(X), np.array(Y)
 
 
-def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
+def half_space_stress(material, c, X, Y, cauchy_p, cauchy_q=None,
                       q_ratio=None) -> StressField:
     """The stresses at points Y < 0 of the half-space under surface tractions p and q.
 
     Parameters
     ----------
-    material : Orthotropic
+    material : Material
+        :class:`contact.Orthotropic` or any object with the methods of
+        :class:`contact.Material` (its ``half_space_modes(c)`` gives the field).
     c : float
         Relative speed of the tractions, 0 <= c < c_R.
     X, Y : array_like
@@ -376,8 +508,12 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
         Points not real numbers or not finite, or Y >= 0 (the surface itself is the
         traction: see :meth:`contact.ContactResult.stress`).
     ContactInputError
-        ``material`` not an :class:`~contact.Orthotropic`; both ``cauchy_q`` and
-        ``q_ratio`` given.
+        ``material`` without the methods of :class:`contact.Material`; both ``cauchy_q``
+        and ``q_ratio`` given.
+    MaterialError
+        The material's ``half_space_modes(c)``, or the ``points`` or ``stresses`` of what it
+        returns, give what :class:`contact.MaterialModes` does not allow (or raise):
+        :func:`half_space_modes`, :func:`modes_points`, :func:`modes_stresses`.
     SpeedError, FrictionError
         ``c`` outside [0, c_R) or not a number; ``q_ratio`` not a finite number.
     CauchyTransformError
@@ -409,9 +545,7 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
     >>> bool(abs(f.sigma_xx) < 1e-12 and abs(f.sigma_xy) < 1e-12)
     True
     """
-    if not isinstance(material, Orthotropic):
-        raise ContactInputError(f"material must be a contact.Orthotropic (or "
-                                f"contact.Isotropic(...)), got {type(material).__name__}")
+    check_material(material)
     X, Y = stress_points(X, Y)
     if np.any(Y == 0):
         raise StressPointError("Y must be < 0 here (on Y = 0 the stresses are the tractions)")
@@ -424,11 +558,11 @@ def half_space_stress(material: Orthotropic, c, X, Y, cauchy_p, cauchy_q=None,
         raise ContactInputError("give cauchy_q or q_ratio, not both")
     if q_ratio is not None:
         q_ratio = check_finite("q_ratio", q_ratio, FrictionError)
-    modes = HalfSpaceModes.of(material, c)
-    Z = modes.points(X, Y)
+    modes = half_space_modes(material, c)
+    Z = modes_points(modes, X, Y)
     Cp = [_transform(cauchy_p, "cauchy_p", z, X, Y) for z in Z]
     Cq = None if cauchy_q is None else [_transform(cauchy_q, "cauchy_q", z, X, Y) for z in Z]
-    sxx, syy, sxy = modes.stresses(Cp, Cq, q_ratio)
+    sxx, syy, sxy = modes_stresses(modes, Cp, Cq, q_ratio, X, Y)
     return StressField(X, Y, sxx, syy, sxy)
 
 
