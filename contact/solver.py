@@ -33,7 +33,7 @@ from .continuation import ZoneState, follow_last_again, follow_load, inspect_sta
 from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
                      check_finite, real_array)
-from .material import Orthotropic
+from .protocol import check_material
 from .punches import Punch
 from .result import (RESIDUAL_U, ContactResult, ContactZone, LoadCurve,
                      _ClosedFormContactResult, _sif, relative_residual)
@@ -50,9 +50,7 @@ _N_MAX = 4096      # adaptive doubling stops here
 # public entry point
 # --------------------------------------------------------------------------
 def _check_inputs(material, punch, load, speed, friction, direction, method, n, tol):
-    if not isinstance(material, Orthotropic):
-        raise ContactInputError(
-            f"material must be a contact.Orthotropic (or contact.Isotropic(...)), got {type(material).__name__}")
+    check_material(material)
     if not isinstance(punch, Punch):
         raise ContactInputError(
             "punch must be one of FlatPunch, TriangularPunch, ParabolicPunch, CylindricalPunch, "
@@ -100,7 +98,9 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
 
     Parameters
     ----------
-    material : Orthotropic
+    material : Material
+        :class:`Orthotropic` (or :func:`Isotropic`), or any object with the methods of the
+        :class:`Material` protocol.
     punch : Punch
         FlatPunch, TriangularPunch, ParabolicPunch, CylindricalPunch or ProfilePunch.
     load : float
