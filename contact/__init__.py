@@ -8,7 +8,8 @@ any orthotropic material (or any material of one's own with the methods of the
 path goes through :func:`sie.solve`; the paper's closed forms (corrected) are available as
 ``method="closed_form"`` and serve as regression oracles.
 """
-from .constants import SurfaceConstants, limiting_speed, rayleigh_speed, surface_constants
+from .constants import (SurfaceConstants, limiting_speed, rayleigh_speed, relative_speed,
+                        surface_constants)
 from .continuation import Event
 from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
                      DirectionError, FrictionError, LoadError, MaterialError,
@@ -26,6 +27,7 @@ from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 __all__ = [
     "Material", "MaterialModes", "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
+    "relative_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
     "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "Event",
     "contact_length",

@@ -1,8 +1,8 @@
 """Surface constants N11, N12, N21, N22 of a moving half-space, and its Rayleigh speed.
 
-The public entries :func:`surface_constants`, :func:`rayleigh_speed` and
-:func:`limiting_speed` take any material (:class:`contact.Material`): they check it, the
-speed, and what its methods return.  The formulas below are those of an orthotropic
+The public entries :func:`surface_constants`, :func:`rayleigh_speed`,
+:func:`limiting_speed` and :func:`relative_speed` take any material
+(:class:`contact.Material`): they check it, the speed, and what its methods return.  The formulas below are those of an orthotropic
 material (:func:`orthotropic_surface_constants`, :func:`orthotropic_rayleigh_speed`,
 :func:`orthotropic_limiting_speed`), which :class:`contact.Orthotropic`'s methods call.
 
@@ -53,8 +53,6 @@ import math
 import warnings
 from dataclasses import dataclass
 
-import numpy as np
-
 from .errors import MaterialError, NearRayleighWarning, SpeedError, check_finite
 from .protocol import call, check_material, describe_call
 
@@ -63,6 +61,7 @@ __all__ = [
     "surface_constants",
     "rayleigh_speed",
     "limiting_speed",
+    "relative_speed",
     "check_speed",
     "check_subrayleigh",
     "root_symmetric_functions",
@@ -273,6 +272,54 @@ def limiting_speed(material) -> float:
             f"speed {c_R!r} (allowed: c_R <= c_L: below c_L every mode decays into the "
             f"half-space, and c_R is below c_L)")
     return c_L
+
+
+def relative_speed(material, V) -> float:
+    """The relative speed c of a punch moving at speed ``V`` over a material.
+
+    Parameters
+    ----------
+    material : Material
+        :class:`contact.Orthotropic` (c = abs(V) / sqrt(C33 / rho), Zhou et al. 2014,
+        Sec. 6.1; needs its density) or any object with the methods of
+        :class:`contact.Material`.
+    V : float
+        The punch's speed, in the unit of the material's wave speeds.
+
+    Returns
+    -------
+    float
+        ``material.relative_speed(V)``, checked: a finite real number >= 0.
+
+    Raises
+    ------
+    ContactInputError
+        ``material`` lacks the methods of :class:`contact.Material`.
+    SpeedError
+        ``V`` not a finite real number (as the material says).
+    MaterialError
+        The material has no density, or its ``relative_speed(V)`` returns what is not a
+        finite real number >= 0, or raises.
+
+    References
+    ----------
+    Zhou, Lee & Jang, Arch. Mech. 66 (2014), Sec. 6.1 (which prints sqrt(C33 rho) for the
+    shear wave speed: see the documentation, Theory: errata of Zhou et al. 2014).
+
+    Examples
+    --------
+    >>> import contact
+    >>> m = contact.Orthotropic(4.0, 1.0, 4.0, 1.0, rho=4.0)      # sqrt(C33 / rho) = 0.5
+    >>> contact.relative_speed(m, 0.25)
+    0.5
+    """
+    check_material(material)
+    where = describe_call(material, "relative_speed", V)
+    c = check_finite(f"{where} (a relative speed)", call(material, "relative_speed", V),
+                     MaterialError)
+    if c < 0.0:
+        raise MaterialError(f"{where} must return a relative speed >= 0, got {c!r}")
+    return c
 
 
 def surface_constants(material, c) -> SurfaceConstants:

@@ -16,7 +16,8 @@ surface is a combination of Cauchy transforms of the tractions at complex points
 class: nothing in :mod:`contact` looks at a material's class.
 
 The public entries (:func:`contact.surface_constants`, :func:`contact.rayleigh_speed`,
-:func:`contact.limiting_speed`, :func:`contact.subsurface.half_space_modes`) check the
+:func:`contact.limiting_speed`, :func:`contact.relative_speed`,
+:func:`contact.subsurface.half_space_modes`) check the
 object (:func:`check_material`), the speed, and what each method returns, and raise a
 :class:`~contact.errors.MaterialError` naming the method whose result is not admissible.
 """
@@ -46,15 +47,15 @@ class MaterialModes(Protocol):
     (z_j = X - i eta_j Y for the characteristic roots eta_j of an orthotropic material:
     :class:`contact.subsurface.HalfSpaceModes`).
 
-    Methods
-    -------
-    points(X, Y)
+    Attributes
+    ----------
+    points : callable (X, Y) -> list of ndarray
         The complex points where the transforms are needed: a list of complex arrays of the
         shape of X and Y (float arrays of one shape, Y < 0), each with Im z > 0.
-    stresses(Cp, Cq=None, q_ratio=None)
+    stresses : callable (Cp, Cq=None, q_ratio=None) -> (ndarray, ndarray, ndarray)
         (sigma_xx, sigma_yy, sigma_xy), real arrays of the points' shape (tension positive),
         from Cp (and Cq), lists of the transforms of p (and q) at each of the points, in
-        the order :meth:`points` gave them; without Cq, q = q_ratio p (q = 0 when q_ratio is
+        the order ``points`` gave them; without Cq, q = q_ratio p (q = 0 when q_ratio is
         None).
 
     References
@@ -62,6 +63,21 @@ class MaterialModes(Protocol):
     Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (2.4)-(3.1) (the modes of the orthotropic
     half-space); Johnson, Contact Mechanics (1985), Sec. 2.3 (the isotropic field of
     surface tractions).
+
+    Examples
+    --------
+    Flamant's line load P = 1, C(z) = -1 / (pi z), on an isotropic material at rest: on the
+    axis at depth 2, sigma_yy = -2P / (pi depth) (Johnson 1985, eq. (2.15)):
+
+    >>> import numpy as np, contact
+    >>> modes = contact.Isotropic(1.0, 0.3).half_space_modes(0.0)
+    >>> isinstance(modes, contact.MaterialModes)
+    True
+    >>> X, Y = np.array([0.0]), np.array([-2.0])
+    >>> C = [-1.0 / (np.pi * z) for z in modes.points(X, Y)]
+    >>> sxx, syy, sxy = modes.stresses(C)
+    >>> round(float(syy[0] * np.pi), 9)
+    -1.0
     """
 
     def points(self, X, Y) -> list:
@@ -77,28 +93,29 @@ class Material(Protocol):
 
     Any object with these five methods is a material, whatever its class.  The library
     calls them through :func:`contact.surface_constants`, :func:`contact.rayleigh_speed`,
-    :func:`contact.limiting_speed` and :func:`contact.subsurface.half_space_modes`, which
+    :func:`contact.limiting_speed`, :func:`contact.relative_speed` and
+    :func:`contact.subsurface.half_space_modes`, which
     check what they return; a method may raise a :class:`~contact.ContactInputError`
     (e.g. :class:`~contact.SpeedError`, :class:`~contact.MaterialError`) to refuse its
     input, and any other exception it raises is reported as a
     :class:`~contact.MaterialError` naming it.
 
-    Methods
-    -------
-    surface_constants(c) -> SurfaceConstants
+    Attributes
+    ----------
+    surface_constants : callable c -> SurfaceConstants
         N11, N12, N21, N22 at the relative speed c, 0 <= c < c_R (only such c are passed):
         finite real numbers with N11 < 0, ``c`` the speed asked and ``rayleigh_speed`` the
         material's c_R.  ``eta_product``, ``eta_sum`` and ``rayleigh_denominator`` are
         those of the orthotropic formulas, and may be left None.
-    rayleigh_speed() -> float
+    rayleigh_speed : callable () -> float
         The relative Rayleigh speed c_R > 0: the admissible speeds are 0 <= c < c_R.
-    limiting_speed() -> float
+    limiting_speed : callable () -> float
         The lowest relative speed at which a mode stops decaying into the half-space
         (>= c_R).
-    relative_speed(V) -> float
+    relative_speed : callable V -> float
         The relative speed c >= 0 of a punch moving at speed V (needs a density; may raise
         :class:`~contact.MaterialError` without one).
-    half_space_modes(c) -> MaterialModes
+    half_space_modes : callable c -> MaterialModes
         The modes at the relative speed c (0 <= c < c_R) for the field under the surface.
 
     Notes
@@ -168,7 +185,12 @@ def check_material(material, name: str = "material") -> None:
         if not callable(getattr(material, method, None)):
             break
     else:
-        return
+        if not isinstance(material, type):
+            return
+        raise ContactInputError(
+            f"{name} must be a material object, got the class {material.__name__} itself: "
+            f"make one, e.g. contact.Orthotropic(C11, C12, C22, C33) or a material of your "
+            f"own (an instance of its class)")
     missing = [method for method, _ in MATERIAL_METHODS
                if not callable(getattr(material, method, None))]
     raise ContactInputError(
