@@ -501,6 +501,8 @@ def _complex(z: complex, digits: int) -> str:
 def cmd_constants(args) -> int:
     scene = scenes.load_scene(args.scene) if args.scene else None
     material = scene.material.build() if scene else contact.zhou2014()
+    spec = scene.material if scene else scenes.MaterialSpec(
+        *(getattr(material, k) for k in ("C11", "C12", "C22", "C33")), preset="zhou2014")
     if args.speed is not None:
         speeds = [args.speed]
     elif scene is not None:
@@ -508,24 +510,26 @@ def cmd_constants(args) -> int:
     else:
         raise UsageError("contact constants needs --speed C (or a scene whose [motion] gives "
                          "the speeds)")
-    print(format_constants(material, speeds, scene.source if scene else "zhou2014 (default)"))
+    source = scene.source if scene else "zhou2014 (default)"
+    print(format_constants(material, speeds, f"{source}, {spec.describe()}"))
     return 0
 
 
 def format_constants(material, speeds, source: str) -> str:
-    """N11, N12, N21, N22 (and eta1 eta2, eta1 + eta2) at each speed, and c_R."""
+    """N11, N12, N21, N22 (and eta1 eta2, eta1 + eta2, "-" for a material without them:
+    :class:`contact.SurfaceConstants`) at each speed, and c_R; ``source`` names the
+    material."""
     c_R = contact.rayleigh_speed(material)
     header = ("c", "N11", "N12", "N21", "N22", "eta1*eta2", "eta1+eta2")
     rows = []
     for c in speeds:
         k = contact.surface_constants(material, c)
-        rows.append((f"{c:g}", *(f"{v:.12g}" for v in (k.N11, k.N12, k.N21, k.N22,
-                                                        k.eta_product, k.eta_sum))))
+        rows.append((f"{c:g}", *("-" if v is None else f"{v:.12g}"
+                                 for v in (k.N11, k.N12, k.N21, k.N22, k.eta_product,
+                                           k.eta_sum))))
     widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(header)]
-    stiffness = ", ".join(f"{v:.10g}" for v in (material.C11, material.C12, material.C22,
-                                                material.C33))
     lines = [f"Surface constants (dv/dX = N12 q + N11 Hc[p], sigma_XX = N21 p + N22 Hc[q]); "
-             f"material: {source} (C11, C12, C22, C33 = {stiffness}); N11, N12 in 1/(stress unit)",
+             f"material: {source}; N11, N12 in 1/(stress unit)",
              f"Rayleigh speed c_R = {c_R!r} (admissible: 0 <= c < c_R)",
              "  ".join(h.rjust(w) for h, w in zip(header, widths))]
     lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]

@@ -133,6 +133,12 @@ class _Parser:
 
     def material(self, table: dict) -> MaterialSpec:
         self.check_keys(table, MATERIAL_KEYS, "material")
+        if "factory" in table:
+            return self.material_factory(table)
+        if "arguments" in table:
+            raise self.error("material.arguments", "given without material.factory",
+                             'factory = "module:function" with arguments = { ... } (its '
+                             "keyword arguments)")
         rho = None
         if "rho" in table:
             rho = self.number("material.rho", table["rho"], "a density > 0")
@@ -162,6 +168,49 @@ class _Parser:
         except contact.MaterialError as exc:
             raise self.error("material", str(exc)) from None
         return MaterialSpec(*C, rho=rho)
+
+    def material_factory(self, table: dict) -> MaterialSpec:
+        """``factory = "module:function"`` (and ``arguments = { ... }``, its keyword
+        arguments): a user's material, built now to check it and again wherever a case is
+        solved (:meth:`MaterialSpec.build`)."""
+        allowed = ('"module:function" returning an object with the methods of '
+                   "contact.Material: surface_constants(c), rayleigh_speed(), limiting_speed(), "
+                   "relative_speed(V), half_space_modes(c)")
+        other = [k for k in table if k not in ("factory", "arguments")]
+        if other:
+            raise self.error(f"material.{other[0]}", "given together with material.factory",
+                             "either factory (with arguments) or preset, or all of C11, C12, "
+                             "C22, C33 (with rho)")
+        factory = self.function("material.factory", table["factory"], allowed)
+        arguments = table.get("arguments", {})
+        if not isinstance(arguments, dict):
+            raise self.error("material.arguments", f"must be a table, got {_describe(arguments)}",
+                             "a table of the factory's keyword arguments, e.g. "
+                             "arguments = { G = 80.0, nu = 0.3 }")
+        arguments = tuple((k, self.argument(f"material.arguments.{k}", v))
+                          for k, v in arguments.items())
+        spec = MaterialSpec(factory=factory, arguments=arguments, base_dir=self.base_dir)
+        try:
+            material = spec.build()
+        except Exception as exc:               # any failure of user code is a scene error
+            raise self.error("material.factory", f"{factory}(**arguments) raised "
+                             f"{type(exc).__name__}: {exc}", allowed) from None
+        try:
+            contact.rayleigh_speed(material)
+        except contact.ContactInputError as exc:   # not a material, or a c_R refused
+            raise self.error("material.factory", f"{factory}(**arguments) returned "
+                             f"{type(material).__name__}: {exc}", allowed) from None
+        return spec
+
+    def argument(self, key, value):
+        """A factory argument: a number, string or boolean, or a list of them (a tuple)."""
+        if isinstance(value, list):
+            return tuple(self.argument(f"{key}[{k}]", v) for k, v in enumerate(value))
+        if isinstance(value, (bool, int, float, str)):
+            return value
+        raise self.error(key, f"must be a number, string or boolean, or a list of them, got "
+                         f"{_describe(value)}", "numbers, strings, booleans and lists of them "
+                         "(the factory's keyword arguments)")
 
     def punch(self, table: dict) -> dict:
         kinds = " | ".join(KINDS)
@@ -382,7 +431,7 @@ class _Parser:
             if "speed" in table:
                 raise self.error("motion.velocity", "given together with motion.speed",
                                  "either speed (relative, c = V/sqrt(C33/rho)) or velocity V")
-            if material.rho is None:
+            if material.factory is None and material.rho is None:
                 raise self.error("motion.velocity", "needs material.rho to convert V into the "
                                  "relative speed c = V/sqrt(C33/rho)",
                                  "material.rho > 0, or motion.speed instead")
@@ -523,20 +572,40 @@ class _Parser:
     def check_cases(self, scene: Scene):
         """Every speed of the sweep below the Rayleigh speed, and every punch of the sweep
         buildable: each distinct value once (the punches: the product of the punch section's
-        swept keys), not once per case."""
+        swept keys), not once per case.  A factory's material has the characteristic roots
+        if ``"roots"`` is asked."""
         material = scene.material.build()
         c_R = contact.rayleigh_speed(material)
+        if "roots" in scene.fields and not callable(getattr(material, "characteristic_roots",
+                                                            None)):
+            k = scene.fields.index("roots")
+            raise self.error(f"outputs.fields[{k}]", f"the roots are the characteristic roots "
+                             f"eta of an orthotropic material (Zhou et al. 2014, eq. (3.1)); "
+                             f"the material of {scene.material.factory} "
+                             f"({type(material).__name__}) has no characteristic_roots(c)",
+                             "the other fields, or a material with characteristic_roots(c) "
+                             "(contact.Orthotropic)")
         by_velocity = "velocity" in scene.motion
         name = "velocity" if by_velocity else "speed"
         key, given = f"motion.{name}", scene.motion[name]
         for v in dict.fromkeys(given if isinstance(given, tuple) else (given,)):
-            c = material.relative_speed(v) if by_velocity else v
+            c = self.relative_speed(material, key, v) if by_velocity else v
             if not c < c_R:
                 shown = f"velocity = {v!r} (relative speed c = {c!r})" if by_velocity else f"{c!r}"
                 raise self.error(key, f"{shown} is not below the Rayleigh speed of this material, "
                                  f"c_R = {c_R!r}", f"0 <= speed < c_R = {c_R:.10g}")
         for spec in scene.punch_specs():
             self.check_punch(spec)
+
+    def relative_speed(self, material, key, V) -> float:
+        """The material's relative speed of the velocity V, or a SceneError at ``key``."""
+        try:
+            return contact.relative_speed(material, V)
+        except contact.ContactInputError as exc:
+            raise self.error(key, f"velocity = {V!r}: {exc}",
+                             "a velocity the material converts into a relative speed "
+                             "(relative_speed(V); material.rho for C11..C33), or motion.speed "
+                             "instead") from None
 
     def check_punch(self, spec: PunchSpec):
         try:

@@ -196,6 +196,15 @@ def _shared_constants(material, speed) -> tuple:
     return consts, tuple(f"{w.category.__name__}: {w.message}" for w in caught)
 
 
+def _constants_at(material, speed) -> tuple:
+    """:func:`_shared_constants`, or the same uncached for a material that cannot be hashed
+    (a factory's object of its own may not be)."""
+    try:
+        return _shared_constants(material, speed)
+    except TypeError:                       # unhashable: the lru_cache could not key it
+        return _shared_constants.__wrapped__(material, speed)
+
+
 def run_cases(cases) -> list:
     """Solve a run of cases and compute the requested per-case fields of each (not
     roots/constants, which :func:`run_scene` computes once per speed): what a worker runs
@@ -245,7 +254,7 @@ def _run_group(group) -> list:
     by_speed = {}
     for case in group:
         if case.speed not in by_speed:
-            by_speed[case.speed] = _shared_constants(material, case.speed)
+            by_speed[case.speed] = _constants_at(material, case.speed)
     consts = [by_speed[case.speed][0] for case in group]
     ready = [i for i, k in enumerate(consts) if not isinstance(k, Exception)]
     results = [k if isinstance(k, Exception) else None for k in consts]
@@ -420,9 +429,11 @@ def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
     return values
 
 
-def speed_entry(material: contact.Orthotropic, speed: float, fields) -> dict:
+def speed_entry(material, speed: float, fields) -> dict:
     """The per-speed fields (roots and/or surface constants) asked among ``fields`` at one
-    speed: {field: value}."""
+    speed: {field: value}.  ``eta_product`` and ``eta_sum`` are None (null, an empty cell)
+    for a material without them (:class:`contact.SurfaceConstants`); the roots need the
+    material's ``characteristic_roots(c)`` (the scene's parser checks that it has it)."""
     out = {}
     if "constants" in fields:
         k = contact.surface_constants(material, speed)

@@ -10,14 +10,14 @@ from dataclasses import dataclass
 import numpy as np
 
 import contact
-from contact.registry import KINDS
+from contact.registry import KINDS, import_callable
 
 
 # --------------------------------------------------------------------------
 # the vocabulary of a scene
 # --------------------------------------------------------------------------
 SECTIONS = ("title", "material", "punch", "motion", "outputs", "numerics")
-MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho")
+MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho", "factory", "arguments")
 PRESETS = {"zhou2014": contact.zhou2014}
 PIECE_KEYS = ("from", "to", "coefficients")
 MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
@@ -136,16 +136,61 @@ class CaseError(RuntimeError):
 # --------------------------------------------------------------------------
 @dataclass(frozen=True)
 class MaterialSpec:
-    """Stiffnesses of eq. (2.2) (and the density, if given), after a preset is expanded."""
-    C11: float
-    C12: float
-    C22: float
-    C33: float
+    """The scene's material: plain data, rebuilt into a material wherever it is solved (so
+    a case can travel to another process or a Dask worker).
+
+    Either the stiffnesses of an orthotropic material, Zhou et al. 2014, eq. (2.2) (and the
+    density, if given), after a preset is expanded; or a user's ``factory``, a
+    "module:function" called with ``arguments`` that returns any object with the methods
+    of :class:`contact.Material`.
+
+    Attributes
+    ----------
+    C11, C12, C22, C33 : float or None
+        The stiffnesses (None with a factory).
+    rho : float or None
+        The density (None with a factory: the factory's material converts velocities).
+    preset : str or None
+        The preset the stiffnesses came from.
+    factory : str or None
+        "module:function" returning the material.
+    arguments : tuple of (key, value)
+        The factory's keyword arguments (numbers, strings, booleans, and tuples of them).
+    base_dir : str or None
+        The scene file's directory (searched first for the factory's module).
+    """
+    C11: float | None = None
+    C12: float | None = None
+    C22: float | None = None
+    C33: float | None = None
     rho: float | None = None
     preset: str | None = None
+    factory: str | None = None
+    arguments: tuple = ()
+    base_dir: str | None = None
 
-    def build(self) -> contact.Orthotropic:
+    def build(self):
+        """The material: a :class:`contact.Orthotropic`, or what the factory returns."""
+        if self.factory is not None:
+            return import_callable(self.factory, self.base_dir)(**dict(self.arguments))
         return contact.Orthotropic(self.C11, self.C12, self.C22, self.C33, rho=self.rho)
+
+    def describe(self) -> str:
+        """The material in a few words, for the printed table and the command's headers."""
+        if self.factory is not None:
+            args = ", ".join(f"{k}={v!r}" for k, v in self.arguments)
+            return f"{self.factory}({args})"
+        return (f"{self.preset or 'custom'} (C11, C12, C22, C33 = {self.C11:.10g}, "
+                f"{self.C12:.10g}, {self.C22:.10g}, {self.C33:.10g})")
+
+    def echo(self) -> dict:
+        """The material as the scene gave it after defaults, JSON-ready."""
+        if self.factory is not None:
+            return {"factory": self.factory,
+                    "arguments": {k: _json_value(v) for k, v in self.arguments}}
+        out = {"preset": self.preset} if self.preset else {}
+        out.update(C11=self.C11, C12=self.C12, C22=self.C22, C33=self.C33, rho=self.rho)
+        return out
 
 
 @dataclass(frozen=True)
@@ -325,9 +370,7 @@ class Scene:
 
     def echo(self) -> dict:
         """The scene after defaults, as plain JSON-ready data."""
-        material = {"preset": self.material.preset} if self.material.preset else {}
-        material.update(C11=self.material.C11, C12=self.material.C12, C22=self.material.C22,
-                        C33=self.material.C33, rho=self.material.rho)
+        material = self.material.echo()
         punch = {}
         for k, v in self.punch.items():
             if k == "pieces":
@@ -391,6 +434,11 @@ def _json_float(v):
     return None if v is None or not math.isfinite(v) else v
 
 
+def _json_value(v):
+    """A factory argument as JSON-ready data: tuples as lists."""
+    return [_json_value(x) for x in v] if isinstance(v, tuple) else v
+
+
 def _fmt(v) -> str:
     return f"{v:+d}" if isinstance(v, int) and not isinstance(v, bool) else f"{v:g}"
 
@@ -398,7 +446,7 @@ def _fmt(v) -> str:
 def _case_inputs(material: MaterialSpec, punch: dict, motion: dict) -> dict:
     inputs = {}
     if "velocity" in motion:
-        inputs["speed"] = material.build().relative_speed(motion["velocity"])
+        inputs["speed"] = contact.relative_speed(material.build(), motion["velocity"])
     else:
         inputs["speed"] = motion["speed"]
     inputs["friction"] = motion["friction"]

@@ -117,9 +117,7 @@ class TableSummary:
         c_R = contact.rayleigh_speed(mat.build())
         head = [scene.title,
                 f"  scene: {scene.source}",
-                f"  material: {mat.preset or 'custom'} (C11, C12, C22, C33 = {mat.C11:.10g}, "
-                f"{mat.C12:.10g}, {mat.C22:.10g}, {mat.C33:.10g}); Rayleigh speed c_R = "
-                f"{c_R:.10f}",
+                f"  material: {mat.describe()}; Rayleigh speed c_R = {c_R:.10f}",
                 f"  fixed inputs: {_inputs_text(_fixed_inputs(scene, self._first_inputs or {}))}"]
         columns = [k for k in self._columns
                    if k != "time ms" and (k != "zones" or self._other_than_one_zone)]

@@ -20,8 +20,9 @@ Columns, in this order (a group only when its field is asked):
 * ``"subsurface"``: for q in ``max_shear``, ``max_tension``: ``q`` (the value), ``q_X``,
   ``q_Y``, ``q_depth``, ``q_half_width``, ``q_depth_over_a``;
 * ``"constants"``: ``N11``, ``N12``, ``N21``, ``N22``, ``rayleigh_speed``, ``eta_product``,
-  ``eta_sum``; ``"roots"``: ``root{k}_real``, ``root{k}_imag``, k = 1..4 (eta1, -eta1, eta3,
-  -eta3);
+  ``eta_sum`` (the last two empty for a material without them: a scene's
+  ``[material] factory`` may give one); ``"roots"``: ``root{k}_real``, ``root{k}_imag``,
+  k = 1..4 (eta1, -eta1, eta3, -eta3);
 * the solver's diagnostics, always: ``n``, ``residual``, ``load_check``.
 
 Numbers are written as Python's repr (they read back exactly), integers as integers, an empty
