@@ -4,7 +4,7 @@ Cases that share a punch face and differ in the coefficients of the equation (fr
 speed: a = N12 mu_f, b = N11) and in the load go through the first step of
 :func:`contact.continuation.follow_load` together -- first touch, the power-law prediction to
 the load, the side conditions there, the solution and its checks -- each stage one vectorised
-call (:class:`sie.DominantBatch`) instead of one per case.  It is the continuation's own step,
+call (an :class:`sie.Equation` with a case axis) instead of one per case.  It is the continuation's own step,
 in the cases where that step is the whole answer:
 
 * the face is convex and lowest at one point, edge or flat stretch (one zone, whose gap opens
@@ -68,14 +68,18 @@ def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
     kinds = _touch_kinds(face, lowest[0])
     if kinds is None:
         return None
-    eqs = sie.DominantBatch(a=a, b=b, n=n, left=_SIE_END[kinds[0]], right=_SIE_END[kinds[1]])
-    c, d, anchors = _seed(face, lowest[0], eqs)
+    unit = np.ones(a.size)
+    eqs = sie.Equation(a=a, b=b, left=_SIE_END[kinds[0]], right=_SIE_END[kinds[1]],
+                       intervals=_cases(-unit, unit))
+    c, d, anchors = _seed(face, lowest[0], np.array([e.alpha for e in eqs.exponents]),
+                          np.array([e.beta for e in eqs.exponents]))
+    eqs = eqs.on(_cases(c, d))
     z0 = Zone(float(c[0]), float(d[0]), *kinds)
     kappa = z0.kappa
     ok = np.ones(a.size, dtype=bool)
     if kappa != 1:
         # the loads at first touch, then the power law about the anchors to P
-        L = eqs.functionals(slope, np.column_stack([c, d])).integral
+        L = eqs.functionals(slope, n=n).integral
         ok &= L > 0.0
         growth = _growth_exponent(face, z0, anchors, _TOUCH_WIDTH * face.scale)
         g = (P / np.where(ok, L, 1.0)) ** (1.0 / growth) if growth is not None else 1.0
@@ -92,14 +96,14 @@ def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
         return FirstSteps(done, kinds, None)
     if done.size < a.size:
         eqs, P, c, d = eqs.take(done), P[done], c[done], d[done]
-    iv = np.column_stack([c, d])
+    eqs = eqs.on(_cases(c, d))
     if kappa != 1:
-        keep = np.flatnonzero(_side_conditions(eqs, slope, P, iv) <= _CONVERGED)
+        keep = np.flatnonzero(_side_conditions(eqs, slope, P, n) <= _CONVERGED)
         if keep.size == 0:
             return FirstSteps(keep, kinds, None)
         if keep.size < done.size:
-            done, eqs, P, iv = done[keep], eqs.take(keep), P[keep], iv[keep]
-    sols = eqs.solve(slope, iv, total=P if kappa == 1 else None)
+            done, eqs, P = done[keep], eqs.take(keep), P[keep]
+    sols = eqs.solve(slope, n=n, total=P if kappa == 1 else None)
     # index 1: the load is the side condition, int p = P by construction (the residual
     # of ZoneEquations at the predicted total P)
     keep = np.flatnonzero(np.abs(sols.integral() / P - 1.0) <= _CONVERGED) if kappa == 1 \
@@ -126,13 +130,18 @@ def _touch_kinds(face, lowest):
     return FREE, FREE
 
 
-def _seed(face, lowest, eqs):
-    """(c, d, anchors) of the first-touch zone of every equation of ``eqs`` (as
-    :func:`contact.continuation._touch`)."""
+def _cases(c, d):
+    """The zones (c_i, d_i) as the intervals of an sie.Equation's case axis."""
+    return np.column_stack([c, d])[:, None, :]
+
+
+def _seed(face, lowest, alpha, beta):
+    """(c, d, anchors) of the first-touch zone of every case, whose exponents with both
+    ends bounded are ``alpha``, ``beta`` (as :func:`contact.continuation._touch`)."""
     lo, hi = face.extent
     w = _TOUCH_WIDTH * face.scale
     x0, kind = lowest
-    B = len(eqs)
+    B = alpha.size
     if kind == "left-edge":
         return np.full(B, lo), np.full(B, lo + w), (lo, lo)
     if kind == "right-edge":
@@ -142,19 +151,20 @@ def _seed(face, lowest, eqs):
         return (np.full(B, cf if cf == lo else cf - 0.5 * w),
                 np.full(B, df if df == hi else df + 0.5 * w), (cf, df))
     # an interior minimum: the centre shifted so that the solvability condition holds for a
-    # linear slope (both ends free: eqs has the bounded-bounded exponents)
+    # linear slope (both ends free: the bounded-bounded exponents)
     x0 = float(x0)
-    m = x0 + 0.5 * w * (eqs.beta - eqs.alpha)
+    m = x0 + 0.5 * w * (beta - alpha)
     return np.maximum(lo, m - 0.5 * w), np.minimum(hi, m + 0.5 * w), (x0, x0)
 
 
-def _side_conditions(eqs, slope, P, iv):
+def _side_conditions(eqs, slope, P, n):
     """max |F| of each case: the scaled side conditions of one zone with a free end
     (:meth:`contact.zones.ZoneEquations.residual`): the solvability residual over the
     slope's scale (index -1) and int p / P - 1."""
-    fb = eqs.functionals(slope, iv)
+    fb = eqs.functionals(slope, n=n)
     F = np.abs(fb.integral / P - 1.0)
-    if eqs.kappa == -1:
+    iv = eqs.intervals[:, 0, :]
+    if fb.kappa == -1:
         width = iv[:, 1] - iv[:, 0]
         X = iv[:, :1] + width[:, None] * _NINE
         scale = np.max(np.abs(slope(X.ravel()).reshape(X.shape)), axis=1)

@@ -95,11 +95,9 @@ class ZoneEquations:
             # a trial set of ends violates the solvability condition until Newton converges
             warnings.simplefilter("ignore", sie.InconsistentEquationWarning)
             warnings.simplefilter("ignore", sie.ResidualWarning)
-            return sie.solve(self.slope, a=self.a, b=self.b, n=self.n,
-                             left=[_SIE_END[z.left] for z in zones],
-                             right=[_SIE_END[z.right] for z in zones],
-                             total=list(totals), breaks=br,
-                             intervals=[(z.c, z.d) for z in zones], check_residual=False)
+            eq = _equation(self.a, self.b, tuple((z.left, z.right) for z in zones))
+            return eq.on([(z.c, z.d) for z in zones]).solve(
+                self.slope, n=self.n, total=list(totals), breaks=br, check_residual=False)
 
     # -- unknowns <-> zones ----------------------------------------------------------------
     @staticmethod
@@ -137,7 +135,7 @@ class ZoneEquations:
         each solvability residual divided by ``scale`` (default: the largest |H'| on the
         zones), each gap condition by ``scale`` times the wider zone of its pair, and the
         load as int p / P - 1.  One zone with a free end needs only the load and the
-        solvability residual, which :func:`sie.dominant_functionals` gives from one Gauss
+        solvability residual, which :meth:`sie.Equation.functionals` gives from one Gauss
         sum, exactly as the full solve would; the solution is then None (formed once Newton
         has converged)."""
         scale = self._slope_scale(zones) if scale is None else scale
@@ -173,7 +171,9 @@ class ZoneEquations:
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
         left, right = _SIE_END[z.left], _SIE_END[z.right]
         f = lambda u: self.slope(m + h * u)      # noqa: E731
-        return _functionals_rule(self.a, self.b, self.n, left, right)(f, br)   # prepared once
+        # on [-1, 1]: the equation and its rule are prepared once, the zone maps onto it
+        return _equation(self.a, self.b, ((z.left, z.right),)).functionals(f, n=self.n,
+                                                                           breaks=br)
 
     def _raw_one_zone(self, z):
         fun = self._functionals(z)
@@ -350,9 +350,14 @@ class _Budgeted:
 
 
 @functools.lru_cache(maxsize=64)
-def _functionals_rule(a, b, n, left, right):
-    """sie.FunctionalsRule for one zone, prepared once per equation."""
-    return sie.FunctionalsRule(a=a, b=b, n=n, left=left, right=right)
+def _equation(a, b, kinds):
+    """The sie.Equation of zones with end kinds ``kinds`` ((left, right) per zone; on
+    [-1, 1] and its neighbours until :meth:`sie.Equation.on` places it), validated once per
+    coefficients and topology."""
+    J = len(kinds)
+    intervals = None if J == 1 else [(4.0 * j - 1.0, 4.0 * j + 1.0) for j in range(J)]
+    return sie.Equation(a=a, b=b, left=[_SIE_END[l] for l, _ in kinds],
+                        right=[_SIE_END[r] for _, r in kinds], intervals=intervals)
 
 
 def _ordered(zones, lo, hi):

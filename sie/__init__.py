@@ -3,9 +3,11 @@
     a psi(s) + (b/pi) PV int_L psi(t)/(t - s) dt + int_L k(s,t) psi(t) dt = f(s),
     L = [-1, 1] or a union of disjoint intervals,
 
-Public API: :func:`gauss_jacobi`, :func:`solve`, :class:`Solution`, the
-exponent rule :func:`sie_exponents`, Jacobi helpers, and the exceptions
-(all ``ValueError`` subclasses).  This package knows no mechanics.
+Public API: the equation object :class:`Equation` (validated once; its blocks are
+(unknown, interval) pairs; a leading case axis solves many one-interval equations at once),
+:func:`solve` (the one-call form), :class:`Solution` / :class:`SolutionBatch`,
+:func:`gauss_jacobi`, the exponent rule :func:`sie_exponents`, Jacobi helpers, and the
+exceptions (all ``ValueError`` subclasses).  This package knows no mechanics.
 
 ``N_MAX`` (defined in :mod:`sie.solver`) is the largest number of Jacobi coefficients per
 interval that :func:`solve` accepts: the projection is dense, O(n^2) work and memory per
@@ -19,23 +21,24 @@ References: Erdogan, Gupta & Cook (1973); Krenk, Quart. Appl. Math. 33 (1975) 22
 Muskhelishvili, Singular Integral Equations (1953); Hale & Townsend, SIAM J. Sci. Comput. 35
 (2013) A652 (the quadrature); see the documentation, Theory: the singular integral equation.
 """
-from .batch import DominantBatch, FunctionalsBatch, SolutionBatch, functionals_batch, solve_batch
+from .batch import FunctionalsBatch, SolutionBatch
 from .cauchy import jacobi_cauchy
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
                      InvalidBreakpointError, InvalidCoefficientError, InvalidEndConditionError,
                      InvalidExponentError, InvalidIntervalError, InvalidOrderError,
                      KernelSingularityError, PerIntervalArgumentError, ResidualWarning,
-                     SideConditionError, SIEInputError, SIEWarning)
+                     SideConditionError, SIEInputError, SIEWarning, UnsupportedEquationError)
 from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_series
 from .exponents import Exponents, sie_exponents
 from .solution import IntervalSolution, Solution
 from .solver import N_MAX as _N_MAX
-from .solver import Functionals, FunctionalsRule, dominant_functionals, solve
+from .solver import Functionals
+from .equation import Block, Equation, solve
 from .special import jacobi_moment
 
-#: Largest number of Jacobi coefficients per interval that :func:`solve`,
-#: :func:`dominant_functionals` and :class:`FunctionalsRule` accept (``sie.solver.N_MAX``;
+#: Largest number of Jacobi coefficients per interval that :meth:`Equation.solve`,
+#: :meth:`Equation.functionals` and :func:`solve` accept (``sie.solver.N_MAX``;
 #: a larger ``n`` raises :class:`InvalidOrderError`).  The projection is dense: O(n^2) work
 #: and memory per interval, about 1 s at n = N_MAX.  A solution that needs more terms has a
 #: singularity the basis does not carry (pass ``breaks=`` at kinks of f) or should be split
@@ -43,14 +46,13 @@ from .special import jacobi_moment
 N_MAX = _N_MAX
 
 __all__ = [
-    "gauss_jacobi", "solve", "Solution", "IntervalSolution", "sie_exponents", "Exponents",
-    "jacobi_cauchy", "N_MAX",
-    "dominant_functionals", "Functionals", "FunctionalsRule",
-    "DominantBatch", "solve_batch", "SolutionBatch", "functionals_batch", "FunctionalsBatch",
+    "Equation", "Block", "solve", "Solution", "IntervalSolution", "SolutionBatch",
+    "Functionals", "FunctionalsBatch",
+    "gauss_jacobi", "sie_exponents", "Exponents", "jacobi_cauchy", "N_MAX",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",
     "InvalidBreakpointError", "EvaluationPointError", "InvalidIntervalError",
-    "PerIntervalArgumentError", "KernelSingularityError",
+    "PerIntervalArgumentError", "KernelSingularityError", "UnsupportedEquationError",
     "SIEWarning", "InconsistentEquationWarning", "ResidualWarning",
 ]

@@ -4,10 +4,12 @@ Unknowns c = (c^1, ..., c^J), c^j the Jacobi coefficients on interval j.  Row bl
 the projections of the equation on L_i onto P_m^{(-alpha_i,-beta_i)}, m < n_i - kappa_i:
 
     diagonal block   lambda_i at (m, m + kappa_i)          (the exact dominant operator)
-    block (i, j)     b <F^j_k(v_j(s)), P_m>_i / h_m      (i != j: the Cauchy integral over L_j
+    block (i, j)     b_i <F^j_k(v_j(s)), P_m>_i / h_m    (i != j: the Cauchy integral over L_j
                      seen from L_i, F^j_k the exact transform of w_j P_k outside [-1, 1],
                      :mod:`sie.cauchy`, so that close intervals keep full accuracy)
-                   + <h_j int k(s, m_j + h_j u) w_j P_k du, P_m>_i / h_m     (kernel)
+                   + <h_j int k_i(s, m_j + h_j u) w_j P_k du, P_m>_i / h_m     (kernel)
+
+(a_i, b_i and k_i: the coefficients and kernel of the equation on L_i, the row block).
 
 Side conditions as rows: kappa_i = 1 adds h_i mu_0 c^i_0 = total_i (scaled by |lambda_i|);
 kappa_i = -1 removes the row m = 0, whose residual is the solvability condition of L_i
@@ -32,7 +34,8 @@ N_MAX_DENSE = 6000          # unknowns of a dense system (several intervals or a
 
 
 def coupling_images(x, uj, b):
-    """b (1/pi) int_{L_j} w_j P_k / (t - x) dt at real x off L_j: matrix (len(x), n_j)."""
+    """b (1/pi) int_{L_j} w_j P_k / (t - x) dt at real x off L_j: matrix (len(x), n_j)
+    (b: the coefficient of the equation at x)."""
     ends = uj.interval.local_ends(np.asarray(x, dtype=float))
     v = 0.5 * (ends[0] + ends[1])             # the local coordinate (x - m)/h
     return b * cauchy_basis(uj.n, uj.weight, v, ends=ends).real
@@ -57,15 +60,21 @@ def kernel_images(x, uj, kernel):
 _PROBE = (1e-3, 1e-6)
 
 
-def probe_kernel(kernel, unknowns):
+def probe_kernel(unknowns):
     """Refuse a kernel that grows without bound toward a pair of ends (s, t) (a fixed
     singularity: the generalised Cauchy kernels of edge cracks and of cracks ending at an
     interface; Erdogan, Gupta & Cook 1973; Kaya & Erdogan 1987).  It changes the exponent at
     that end, so the Jacobi basis of the end choices cannot represent the solution and the
     collocation converges to a wrong answer.  Sampled at distances 1e-3 and 1e-6 (relative
-    to the half-widths) inside every pair of ends."""
+    to the half-widths) inside every pair of ends, for each row's kernel."""
+    for kernel in {id(u.kernel): u.kernel for u in unknowns if u.kernel is not None}.values():
+        rows = [u for u in unknowns if u.kernel is kernel]
+        _probe(kernel, rows, unknowns)
+
+
+def _probe(kernel, rows, unknowns):
     pts_s, pts_t, tags = [], [], []
-    for ui in unknowns:
+    for ui in rows:
         for uj in unknowns:
             for es in (-1.0, 1.0):
                 for et in (-1.0, 1.0):
@@ -107,20 +116,21 @@ class Assembled:
     at_checks: list | None
 
 
-def operator_images(x, ui, unknowns, b, kernel):
+def operator_images(x, ui, unknowns):
     """The coupling (from the other intervals) and kernel terms at real points x of interval
     ``ui``, one matrix (len(x), n_j) per unknown j: applied to c^j and summed, they give
-    (b/pi) int_{L minus L_i} psi/(t - x) dt + int_L k(x, t) psi(t) dt."""
+    (b_i/pi) int_{L minus L_i} psi/(t - x) dt + int_L k_i(x, t) psi(t) dt (the coefficient
+    and kernel of the equation on L_i)."""
     out = []
     for uj in unknowns:
-        img = coupling_images(x, uj, b) if uj is not ui else np.zeros((x.size, uj.n))
-        if kernel is not None:
-            img += kernel_images(x, uj, kernel)
+        img = coupling_images(x, uj, ui.b) if uj is not ui else np.zeros((x.size, uj.n))
+        if ui.kernel is not None:
+            img += kernel_images(x, uj, ui.kernel)
         out.append(img)
     return out
 
 
-def _offdiagonal(unknowns, b, kernel, checks):
+def _offdiagonal(unknowns, checks):
     """The projected coupling + kernel operator seen from each interval i: a row block of
     shape (m_eq_i, N) over all N unknowns, and the same operator (not projected) at the local
     points ``checks`` of interval i, shape (len(checks), N); one evaluation per interval."""
@@ -128,16 +138,16 @@ def _offdiagonal(unknowns, b, kernel, checks):
     for ui in unknowns:
         u = ui.sample_points()
         x = ui.interval.real(np.concatenate([u, checks]))
-        img = np.hstack(operator_images(x, ui, unknowns, b, kernel))
+        img = np.hstack(operator_images(x, ui, unknowns))
         blocks.append(ui.project(img[:u.size]))
         at_checks.append(img[u.size:])
     return blocks, at_checks
 
 
-def assemble_and_solve(unknowns, fhat, b, kernel, checks):
+def assemble_and_solve(unknowns, fhat, checks):
     """Solve the block system (see module docstring)."""
     J = len(unknowns)
-    if J == 1 and kernel is None:
+    if J == 1 and unknowns[0].kernel is None:
         u = unknowns[0]
         c = u.dominant_rhs_solve(fhat[0], u.total)
         cons = float(fhat[0][0]) if u.kappa == -1 else None
@@ -148,7 +158,7 @@ def assemble_and_solve(unknowns, fhat, b, kernel, checks):
             f"n = {[u.n for u in unknowns]} gives {size} unknowns in one dense system (several "
             f"intervals or a kernel); at most {N_MAX_DENSE} are allowed (memory 8 N^2 bytes, "
             "time ~N^3)")
-    blocks, at_checks = _offdiagonal(unknowns, b, kernel, checks)
+    blocks, at_checks = _offdiagonal(unknowns, checks)
     A = np.empty((size, size))
     rhs = np.empty(size)
     flat = A.reshape(-1)

@@ -1,5 +1,5 @@
-"""Many one-interval dominant equations at once: the stages of :func:`sie.solve` with a
-batch axis.
+"""Many one-interval dominant equations at once: the stages of :meth:`sie.Equation.solve`
+along an equation's case axis.
 
     a_i psi_i(s) + (b_i/pi) PV int_{c_i}^{d_i} psi_i(t)/(t - s) dt = f(s),   i < B,
 
@@ -10,7 +10,9 @@ compiled loop, with f called once on all B sets of nodes.  Per equation the arit
 that of :func:`sie.solve` (the same Gauss-Jacobi kernel, norms and recurrences; a sum may be
 taken in another order, so results agree to rounding), and each equation's result does not
 depend on the others in the batch.  For parameter sweeps, where the Python around a solve
-of a few coefficients costs more than its arithmetic.
+of a few coefficients costs more than its arithmetic.  :class:`sie.Equation` validates the
+cases and keeps one :class:`CaseRules` per n; the results are :class:`SolutionBatch` and
+:class:`FunctionalsBatch`.
 
 References: as for :func:`sie.solve` (Erdogan, Gupta & Cook 1973; Krenk 1975).
 """
@@ -24,9 +26,7 @@ import numpy as np
 from ._jit import jit
 from .cauchy import _FORWARD_GROWTH, f0_parameter_row
 from .cauchy_kernels import series_forward_limit, series_kernel
-from .errors import (EvaluationPointError, InvalidCoefficientError, InvalidIntervalError,
-                     SideConditionError, call_checked)
-from .exponents import check_coefficients, check_end, exponents_of
+from .errors import EvaluationPointError, InvalidIntervalError, call_checked
 from .gaussjacobi import N_BOUNDARY, _small_rule
 from .intervals import Interval
 from .jacobi import _jacobi_norms
@@ -34,8 +34,7 @@ from .quadrature import _NEAR_MINUS_ONE, WeightedRule
 from .solution import IntervalSolution, Solution, equation_end_value
 from .special import jacobi_moment_shifted
 
-__all__ = ["DominantBatch", "solve_batch", "functionals_batch", "SolutionBatch",
-           "FunctionalsBatch"]
+__all__ = ["CaseRules", "SolutionBatch", "FunctionalsBatch"]
 
 
 # --------------------------------------------------------------------------
@@ -156,54 +155,14 @@ def _cauchy_limits(C, Al, Be, MU0, P, z, zm1, zp1, log_growth, cap, out):
 # --------------------------------------------------------------------------
 # the stages
 # --------------------------------------------------------------------------
-def _coefficients(a, b):
-    """a and b as float arrays of one length (scalars broadcast), each pair checked."""
-    try:
-        a, b = np.broadcast_arrays(np.array(a, dtype=float).reshape(-1) if np.ndim(a) else
-                                   np.array([a], dtype=float),
-                                   np.array(b, dtype=float).reshape(-1) if np.ndim(b) else
-                                   np.array([b], dtype=float))
-    except (TypeError, ValueError):
-        raise InvalidCoefficientError(
-            f"a and b must be numbers or equal-length sequences of numbers, got shapes "
-            f"{np.shape(a)} and {np.shape(b)}") from None
-    if a.size == 0:
-        raise InvalidCoefficientError("a and b must give at least one equation, got none")
-    for ai, bi in zip(a.tolist(), b.tolist()):
-        check_coefficients(ai, bi)
-    return a.copy(), b.copy()
-
-
-def _check_batch_intervals(intervals, count):
-    try:
-        iv = np.array(intervals, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidIntervalError("intervals must be (c, d) pairs of numbers") from None
-    if iv.shape != (count, 2):
-        raise InvalidIntervalError(f"intervals must be one (c, d) pair per equation, shape "
-                                   f"({count}, 2); got shape {iv.shape}")
-    good = np.isfinite(iv).all(axis=1) & (iv[:, 0] < iv[:, 1])
-    if not good.all():
-        k = int(np.flatnonzero(~good)[0])
-        raise InvalidIntervalError(f"interval {k} must be finite with c < d, got "
-                                   f"{tuple(iv[k].tolist())}")
-    return iv
-
-
-class DominantBatch:
-    """B dominant equations a_i psi + (b_i/pi) PV int_{c_i}^{d_i} psi/(t - s) dt = f(s),
-    prepared once: the exponents, the projection rules and their norms (stage 1 of
-    :func:`sie.solve`, which does not depend on the interval).  :meth:`functionals` and
-    :meth:`solve` then take B intervals and f, as often as a search over the intervals needs.
-
-    Parameters
-    ----------
-    a, b : float or array_like, shape (B,)
-        Coefficients per equation (a scalar is shared); every b != 0.
-    n : int
-        Jacobi coefficients of each phi_i (>= 2 for index 1), at most ``sie.N_MAX``.
-    left, right : {"bounded", "singular"}
-        Behaviour of every psi_i at its left and right end.
+class CaseRules:
+    """The projection rules of B one-interval dominant equations
+    a_i psi + (b_i/pi) PV int_{c_i}^{d_i} psi/(t - s) dt = f(s) with n coefficients each:
+    stage 1 of the solve (exponents, Gauss-Jacobi rules of (1-u)^{-alpha}(1+u)^{-beta},
+    their norms), which does not depend on the intervals, prepared once for all B.
+    :meth:`functionals` and :meth:`solve` then take B intervals and f, as often as a search
+    over the intervals needs.  Built by :class:`sie.Equation` (which validated a, b and the
+    end choices) for each n it is solved with.
 
     Attributes
     ----------
@@ -214,34 +173,12 @@ class DominantBatch:
         The index, shared (the end choices are).
     n : int
     exponents : tuple of Exponents
-        Per equation (:func:`sie.sie_exponents`).
-
-    Raises
-    ------
-    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError
-        As for :func:`sie.solve`.
-
-    References
-    ----------
-    As for :func:`sie.solve`.
-
-    Examples
-    --------
-    >>> import numpy as np, sie
-    >>> eqs = sie.DominantBatch(a=[0.0, -1.0], b=1.0, n=4, left="bounded", right="bounded")
-    >>> len(eqs), eqs.kappa, [round(float(v), 12) for v in eqs.alpha]
-    (2, -1, [0.5, 0.25])
-    >>> fb = eqs.functionals(lambda s: -s, [(-1.0, 1.0), (-1.0, 1.0)])
-    >>> round(float(fb.integral[0] / (np.pi / 2)), 12)            # psi = sqrt(1 - s^2)
-    1.0
     """
 
-    def __init__(self, *, a, b, n, left, right):
+    def __init__(self, a, b, n, left, right, exps):
         from .solver import _check_n
-        a, b = _coefficients(a, b)
-        left, right = check_end("left", left), check_end("right", right)
-        exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(a.tolist(), b.tolist()))
-        self._set(a, b, _check_n(n, exps[0], ""), left, right, exps)
+        self._set(np.asarray(a, dtype=float), np.asarray(b, dtype=float),
+                  _check_n(n, exps[0], ""), left, right, exps)
 
     def _set(self, a, b, n, left, right, exps, rule=None):
         B = a.size
@@ -277,10 +214,10 @@ class DominantBatch:
     def __len__(self):
         return self.a.size
 
-    def take(self, indices) -> "DominantBatch":
+    def take(self, indices) -> "CaseRules":
         """The equations at ``indices`` (in that order), their rules kept."""
         idx = np.asarray(indices, dtype=int).reshape(-1)
-        out = DominantBatch.__new__(DominantBatch)
+        out = CaseRules.__new__(CaseRules)
         out._set(self.a[idx], self.b[idx], self.n, self.left, self.right,
                  tuple(self.exponents[i] for i in idx.tolist()),
                  (self._x[idx], self._omega[idx], self._end[idx], self._corr[idx],
@@ -314,10 +251,9 @@ class DominantBatch:
         return out / self._norms[:, :count]
 
     # -- the functionals and the solution ----------------------------------------------------
-    def functionals(self, f, intervals) -> "FunctionalsBatch":
-        """int psi_i and the solvability residual of each equation on its interval, from
-        one Gauss sum each (:func:`functionals_batch`)."""
-        iv = _check_batch_intervals(intervals, len(self))
+    def functionals(self, f, iv) -> "FunctionalsBatch":
+        """int psi_i and the solvability residual of each equation on its interval
+        ``iv[i]`` (shape (B, 2)), from one Gauss sum each."""
         k = self.kappa
         if k == 1:
             return FunctionalsBatch(None, None, self.alpha, self.beta, 1)
@@ -328,22 +264,10 @@ class DominantBatch:
         return FunctionalsBatch(scale * fhat[:, 1], fhat[:, 0].copy(), self.alpha, self.beta,
                                 -1)
 
-    def solve(self, f, intervals, total=None) -> "SolutionBatch":
-        """The solution of each equation on its interval (:func:`solve_batch`)."""
-        iv = _check_batch_intervals(intervals, len(self))
+    def solve(self, f, iv, t=None) -> "SolutionBatch":
+        """The solution of each equation on its interval ``iv[i]`` (shape (B, 2)); ``t``:
+        int psi_i for index 1 (checked by the caller), else None."""
         B, k, n = len(self), self.kappa, self.n
-        if k == 1:
-            if total is None:
-                raise SideConditionError("total (= int psi) is required when both ends are "
-                                         "singular (index 1)")
-            t = np.broadcast_to(np.asarray(total, dtype=float), (B,)) if np.ndim(total) == 0 \
-                else np.asarray(total, dtype=float).reshape(-1)
-            if t.size != B or not np.all(np.isfinite(t)):
-                raise SideConditionError(f"total must be one finite number per equation "
-                                         f"({B}), got {total!r}")
-        elif total is not None:
-            raise SideConditionError(f"total must not be given: the index is {k} (a total is "
-                                     "only for both ends singular, index 1)")
         fhat = self._projections(f, iv, n - k)
         C = np.empty((B, n))
         cons = None
@@ -369,8 +293,8 @@ class DominantBatch:
 # --------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
 class FunctionalsBatch:
-    """int psi and the solvability residual of each equation of a batch, without its
-    solution (:func:`functionals_batch`).
+    """int psi and the solvability residual of each equation of a case axis, without its
+    solution (:meth:`sie.Equation.functionals`).
 
     Attributes
     ----------
@@ -385,13 +309,14 @@ class FunctionalsBatch:
 
     References
     ----------
-    As for :func:`sie.dominant_functionals`.
+    As for :meth:`sie.Equation.functionals`.
 
     Examples
     --------
     >>> import sie
-    >>> fb = sie.functionals_batch(lambda s: 1.0 + 0.0 * s, a=0.0, b=1.0, n=4,
-    ...                            left="bounded", right="bounded", intervals=[(-1.0, 1.0)])
+    >>> eq = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded",
+    ...                   intervals=[[(-1.0, 1.0)]])
+    >>> fb = eq.functionals(lambda s: 1.0 + 0.0 * s, n=4)
     >>> fb.kappa, round(float(fb.consistency[0]), 12)     # f = 1 is not solvable: residual 1
     (-1, 1.0)
     """
@@ -402,58 +327,13 @@ class FunctionalsBatch:
     kappa: int
 
 
-def functionals_batch(f, *, a, b, n, left, right, intervals) -> FunctionalsBatch:
-    """:func:`sie.dominant_functionals` of B equations on their own intervals, at once.
-
-    Parameters
-    ----------
-    f : callable
-        Vectorised right-hand side f(s) in real coordinates, called once with the nodes of
-        all B equations (a 1-d array).
-    a, b : float or array_like, shape (B,)
-        Coefficients per equation (a scalar is shared); every b != 0.
-    n : int
-        Jacobi coefficients (as for :func:`sie.solve`).
-    left, right : {"bounded", "singular"}
-        Behaviour of every psi_i at its left and right end.
-    intervals : array_like, shape (B, 2)
-        [c_i, d_i] of each equation.
-
-    Returns
-    -------
-    FunctionalsBatch
-        ``integral`` in real coordinates: int psi_i ds = h_i mu_0 c_0.
-
-    Raises
-    ------
-    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError, CallableOutputError
-        As for :func:`sie.solve`; InvalidIntervalError for an interval not finite with c < d.
-
-    References
-    ----------
-    As for :func:`sie.dominant_functionals`.
-
-    Examples
-    --------
-    psi = sqrt(1 - s^2) solves (1/pi) PV int psi/(t - s) dt = -s on [-1, 1], with
-    int psi = pi/2; on [-2, 2] the same f gives psi = sqrt(4 - s^2), with int psi = 2 pi:
-
-    >>> import numpy as np, sie
-    >>> fb = sie.functionals_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
-    ...                            right="bounded", intervals=[(-1.0, 1.0), (-2.0, 2.0)])
-    >>> np.round(fb.integral / np.pi, 12).tolist(), bool(np.all(abs(fb.consistency) < 1e-14))
-    ([0.5, 2.0], True)
-    """
-    a, b = _per_interval(a, b, intervals)
-    return DominantBatch(a=a, b=b, n=n, left=left, right=right).functionals(f, intervals)
-
-
 # --------------------------------------------------------------------------
 # solutions
 # --------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
 class SolutionBatch:
-    """The solutions of B one-interval equations (:func:`solve_batch`); immutable.
+    """The solutions of the B one-interval equations of a case axis
+    (:meth:`sie.Equation.solve`); immutable.
 
     ``len(batch)`` is B; ``batch[i]`` is equation i's :class:`sie.Solution` (built on
     access, the same as :func:`sie.solve` with ``intervals=[(c_i, d_i)]`` returns, to
@@ -487,8 +367,9 @@ class SolutionBatch:
     Examples
     --------
     >>> import numpy as np, sie
-    >>> sb = sie.solve_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
-    ...                      right="bounded", intervals=[(-1.0, 1.0), (-2.0, 2.0)])
+    >>> eq = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded",
+    ...                   intervals=[[(-1.0, 1.0)], [(-2.0, 2.0)]])
+    >>> sb = eq.solve(lambda s: -s, n=4)
     >>> np.round(sb.integral() / np.pi, 12).tolist()           # pi R^2 / 2
     [0.5, 2.0]
     >>> np.round(sb.phi_local(np.array([0.0])), 12).tolist()   # psi = sqrt(R^2 - s^2)
@@ -624,65 +505,3 @@ class SolutionBatch:
                        self.mu0, P, z, z - 1.0, z + 1.0, math.log(_FORWARD_GROWTH),
                        math.log(2.0), out)
         return out
-
-
-def solve_batch(f, *, a, b, n, left, right, intervals, total=None) -> SolutionBatch:
-    """:func:`sie.solve` of B one-interval equations without kernel or breaks, at once.
-
-    Parameters
-    ----------
-    f : callable
-        Vectorised right-hand side f(s) in real coordinates, called once with the nodes of
-        all B equations (a 1-d array).
-    a, b : float or array_like, shape (B,)
-        Coefficients per equation (a scalar is shared); every b != 0.
-    n : int
-        Jacobi coefficients of each phi_i (>= 2 for index 1).
-    left, right : {"bounded", "singular"}
-        Behaviour of every psi_i at its left and right end.
-    intervals : array_like, shape (B, 2)
-        [c_i, d_i] of each equation.
-    total : float or array_like, shape (B,), optional
-        int psi_i for index 1 (both ends singular); must be absent otherwise.
-
-    Returns
-    -------
-    SolutionBatch
-
-    Raises
-    ------
-    InvalidCoefficientError, InvalidEndConditionError, InvalidOrderError, CallableOutputError
-        As for :func:`sie.solve`; InvalidIntervalError for an interval not finite with c < d;
-        SideConditionError for ``total`` missing for index 1, given otherwise, or not finite.
-
-    Notes
-    -----
-    No residual check and no solvability warning: the collocation of the dominant equation
-    on one interval is exact by construction, and ``consistency`` holds each equation's
-    solvability residual for the caller to judge (a search over the ends drives it to zero).
-
-    References
-    ----------
-    As for :func:`sie.solve`.
-
-    Examples
-    --------
-    >>> import numpy as np, sie
-    >>> sb = sie.solve_batch(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded",
-    ...                      right="bounded", intervals=[(-1.0, 1.0), (-0.5, 0.5)])
-    >>> len(sb), sb.kappa
-    (2, -1)
-    >>> [round(float(v), 12) for v in sb[0](np.array([0.0, 0.6]))]    # sqrt(1 - s^2)
-    [1.0, 0.8]
-    """
-    a, b = _per_interval(a, b, intervals)
-    return DominantBatch(a=a, b=b, n=n, left=left, right=right).solve(f, intervals, total)
-
-
-def _per_interval(a, b, intervals):
-    """a and b, where given once for all, repeated for each interval."""
-    try:
-        count = len(intervals)
-    except TypeError:
-        return a, b                 # the intervals check says what is wrong
-    return (a if np.ndim(a) else [a] * count), (b if np.ndim(b) else [b] * count)

@@ -21,6 +21,7 @@ __all__ = [
     "InvalidIntervalError",
     "PerIntervalArgumentError",
     "KernelSingularityError",
+    "UnsupportedEquationError",
     "SIEWarning",
     "InconsistentEquationWarning",
     "ResidualWarning",
@@ -50,8 +51,8 @@ class InvalidOrderError(SIEInputError):
     """``n`` (number of nodes / unknowns) is not an admissible integer.
 
     Raised by :func:`sie.gauss_jacobi` (n < 1, not an integer, or n > 20000 with an exponent
-    above 5) and by :func:`sie.solve`, :func:`sie.dominant_functionals` and
-    :class:`sie.FunctionalsRule` (n < 1, n < 2 on an interval of index 1, or n > ``N_MAX``).
+    above 5) and by :meth:`sie.Equation.solve`, :meth:`sie.Equation.functionals` and
+    :func:`sie.solve` (n < 1, n < 2 on an interval of index 1, or n > ``N_MAX``).
 
     Examples
     --------
@@ -84,8 +85,7 @@ class InvalidCoefficientError(SIEInputError):
     """``a`` or ``b`` is not finite, or ``b == 0``.
 
     With b = 0 the equation has no Cauchy integral (it is not a singular integral equation).
-    Raised by :func:`sie.solve`, :func:`sie.dominant_functionals` and
-    :class:`sie.FunctionalsRule`.
+    Raised by :class:`sie.Equation` and :func:`sie.solve`.
 
     Examples
     --------
@@ -100,8 +100,7 @@ class InvalidCoefficientError(SIEInputError):
 class InvalidEndConditionError(SIEInputError):
     """``left``/``right`` is not one of "bounded", "singular".
 
-    Raised by :func:`sie.solve`, :func:`sie.dominant_functionals` and
-    :class:`sie.FunctionalsRule`.
+    Raised by :class:`sie.Equation` and :func:`sie.solve`.
 
     Examples
     --------
@@ -137,7 +136,7 @@ class CallableOutputError(SIEInputError):
     Raised when ``f`` or ``kernel`` is not callable, raises, is not vectorised (called with an
     array it must return an array of that shape), or returns complex or non-finite values; the
     message names the callable and the point.  Raised by :func:`sie.solve`,
-    :func:`sie.dominant_functionals` and :class:`sie.FunctionalsRule`.
+    :meth:`sie.Equation.solve` and :meth:`sie.Equation.functionals`.
 
     Examples
     --------
@@ -153,7 +152,7 @@ class InvalidBreakpointError(SIEInputError):
     """A break point is not a finite number strictly inside (-1, 1).
 
     (With ``intervals``: strictly inside one of them.)  Raised by :func:`sie.solve` and
-    :func:`sie.dominant_functionals`.
+    :meth:`sie.Equation.functionals`.
 
     Examples
     --------
@@ -238,6 +237,25 @@ class KernelSingularityError(SIEInputError):
     Traceback (most recent call last):
         ...
     sie.errors.KernelSingularityError: the kernel grows without bound toward (s, t) = (1.0, 1.0) ...
+    """
+
+
+class UnsupportedEquationError(SIEInputError):
+    """A method was asked for an equation it does not handle.
+
+    :meth:`Equation.functionals` needs one interval without a kernel (the functionals of
+    the dominant equation come from one Gauss sum only there), and a case axis holds
+    one-interval equations without a kernel or breaks.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> eq = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded",
+    ...                   kernel=lambda s, t: s * t)
+    >>> eq.functionals(np.cos, n=4)
+    Traceback (most recent call last):
+        ...
+    sie.errors.UnsupportedEquationError: functionals need one interval without a kernel ...
     """
 
 

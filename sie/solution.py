@@ -308,8 +308,9 @@ class Solution:
     ----------
     pieces : tuple of IntervalSolution
         psi on each interval.
-    a, b : float
-        The coefficients of the equation.
+    a, b : float or tuple
+        The coefficients of the equation (a tuple, one per interval, where they differ
+        between intervals).
     intervals : tuple of (c, d)
         L, left to right.
     alpha, beta : float or tuple
@@ -466,7 +467,9 @@ class Solution:
         end keeps ~1e-16 / exponent of it; elsewhere it is the series, as :meth:`phi`."""
         if end not in (1, -1):
             raise EvaluationPointError(f"end must be +1 or -1, got {end!r}")
-        return self._piece(interval).endpoint_value(int(end), self.b)
+        piece = self._piece(interval)
+        b = self.b if not isinstance(self.b, tuple) else self.b[self.pieces.index(piece)]
+        return piece.endpoint_value(int(end), b)
 
     @property
     def condition(self):

@@ -39,11 +39,16 @@ def dominant_lambda(e: Exponents, b: float) -> float:
 
 @dataclass(frozen=True, eq=False)
 class IntervalUnknown:
-    """Interval, exponents, basis size and projection rule of one block of unknowns.
+    """Interval, exponents, basis size and projection rule of one block of unknowns, with
+    the coefficients and kernel of the equation collocated on its interval.
 
     Attributes
     ----------
     interval : Interval
+    a, b : float
+        The coefficients of the equation on the interval.
+    kernel : callable or None
+        Its kernel row k(s, t), s on the interval.
     exp : Exponents
     n : int
         Basis size (coefficients c_0..c_{n-1}).
@@ -61,6 +66,9 @@ class IntervalUnknown:
         h_m of P_m^{(-alpha,-beta)}, m < n - kappa (h_0 exact).
     """
     interval: Interval
+    a: float
+    b: float
+    kernel: object = field(repr=False)
     exp: Exponents
     n: int
     breaks: np.ndarray
@@ -73,8 +81,11 @@ class IntervalUnknown:
     weight: Weight = field(repr=False)
 
     @classmethod
-    def build(cls, interval, e, n, breaks, total, b, count=None):
-        """``count``: how many projections are needed (default n - kappa, all equations)."""
+    def build(cls, block, n, breaks, total, count=None):
+        """The unknown of ``block`` (:class:`sie.Block`: interval, coefficients, exponents,
+        kernel) with n coefficients; ``count``: how many projections are needed (default
+        n - kappa, all equations)."""
+        e, b = block.exponents, block.b
         m_eq = n - e.kappa
         count = m_eq if count is None else count
         norms = _projection_norms(count, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
@@ -84,8 +95,8 @@ class IntervalUnknown:
         else:
             rule = None
             s, ws = composite_rule(m_eq + _EXTRA_PER_PIECE, -e.alpha, -e.beta, breaks)
-        return cls(interval, e, n, breaks, total, dominant_lambda(e, b), rule, s, ws, norms,
-                   Weight.from_exponents(e))
+        return cls(block.interval, block.a, b, block.kernel, e, n, breaks, total,
+                   dominant_lambda(e, b), rule, s, ws, norms, Weight.from_exponents(e))
 
     @property
     def kappa(self) -> int:

@@ -16,10 +16,9 @@ def warm_up() -> None:
     """Exercise each compiled kernel once: Gauss-Jacobi on every rung of its ladder (large
     exponents included), solve for every index, with a kernel, with breaks and on two
     intervals, Cauchy transforms at real and complex points, the log potential (with breaks
-    too), and a batch of one-interval equations (:class:`sie.DominantBatch`)."""
-    from .batch import DominantBatch
+    too), and a case axis of one-interval equations (:class:`sie.Equation`)."""
+    from .equation import Equation, solve
     from .gaussjacobi import gauss_jacobi
-    from .solver import solve
     for n in (1, 30, 300):
         gauss_jacobi(n, -0.4, -0.6)
     gauss_jacobi(30, 6.0, 0.0)
@@ -42,9 +41,10 @@ def warm_up() -> None:
         sol.log_potential(np.array([-1.5, 0.2, 1.5]))    # the correction's sums by clusters
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
-        eqs = DominantBatch(a=[0.7, -0.3], b=1.0, n=5, left="bounded", right="bounded")
-        eqs.functionals(f, [(-1.0, 1.0), (0.0, 2.0)])
-        batch = eqs.solve(f, [(-1.0, 1.0), (0.0, 2.0)])
+        eqs = Equation(a=[0.7, -0.3], b=1.0, left="bounded", right="bounded",
+                       intervals=[[(-1.0, 1.0)], [(0.0, 2.0)]])
+        eqs.functionals(f, n=5)
+        batch = eqs.solve(f, n=5)
         batch.phi_local(np.array([0.1]))
         batch.cauchy_limit_local(np.array([0.1]))
 

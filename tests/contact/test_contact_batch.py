@@ -6,8 +6,8 @@ References, and why each is independent of what it checks:
 * ``contact.solver._numeric`` (the full load continuation: first touch, events, Newton on
   the ends, adaptive n; :mod:`contact.continuation`, :mod:`contact.zones`, ``sie.solve``)
   for one case: the path every case took before the batch existed.  The lockstep step
-  (``sie.DominantBatch``, the power-law prediction, batched side conditions, batched SIFs
-  and residuals) is a separate implementation of that path's first step, so a case it
+  (an ``sie.Equation`` with a case axis, the power-law prediction, batched side conditions,
+  batched SIFs and residuals) is a separate implementation of that path's first step, so a case it
   finishes must agree with the continuation to rounding.  Cases it declines fall back to
   ``_numeric`` itself; for them the comparison checks the dispatch.
 * The corrected closed forms of Zhou et al. 2014 (``method="closed_form"``,

@@ -46,9 +46,9 @@ def _admissible(f, a, b, left, right, n):
     e = sie.sie_exponents(a, b, left, right)
     if e.kappa != -1:
         return f
-    r_f = sie.dominant_functionals(f, a=a, b=b, n=n, left=left, right=right).consistency
-    r_1 = sie.dominant_functionals(lambda s: np.ones_like(s), a=a, b=b, n=n,
-                                   left=left, right=right).consistency
+    eq = sie.Equation(a=a, b=b, left=left, right=right)
+    r_f = eq.functionals(f, n=n).consistency
+    r_1 = eq.functionals(lambda s: np.ones_like(s), n=n).consistency
     shift = -r_f / r_1
     return lambda s: f(s) + shift
 

@@ -144,13 +144,14 @@ def test_endpoint_value_at_a_near_zero_exponent(end, kind):
 
 @pytest.mark.parametrize("end", [-1, 1])
 def test_batch_endpoint_values_at_a_near_zero_exponent(end):
-    """sie.solve_batch, its take(), and each batch[i].endpoint_value."""
+    """An sie.Equation with a case axis, its solutions' take(), and each
+    batch[i].endpoint_value."""
     poly = POLYS[end]["zero at the end"]
     ends = dict(left="singular", right="bounded") if end == -1 else \
         dict(left="bounded", right="singular")
     a, b = (np.array(v) for v in zip(*CASES[end]))
-    iv = [(-1.0, 1.0)] * a.size
-    sb = sie.solve_batch(_f(poly), a=a, b=b, n=6, intervals=iv, **ends)
+    iv = [[(-1.0, 1.0)]] * a.size
+    sb = sie.Equation(a=a, b=b, intervals=iv, **ends).solve(_f(poly), n=6)
     col = (end + 1) // 2
     refs = [_phi_end_reference(poly, ai, bi, end) for ai, bi in zip(a, b)]
     for i, ref in enumerate(refs):

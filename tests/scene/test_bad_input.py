@@ -272,10 +272,20 @@ def _sie_cases():
         ("sie intervals", lambda: solve(intervals=[("-1", 1.0)]), sie.InvalidIntervalError,
          "'-1'"),
         ("sie breaks", lambda: solve(breaks=["0.1"]), sie.InvalidBreakpointError, "'0.1'"),
-        ("sie functionals a", lambda: sie.dominant_functionals(np.cos, **{**kw, "a": "0.3"}),
+        ("sie Equation a", lambda: sie.Equation(a="0.3", b=1.0, left="bounded",
+                                                right="singular"),
          sie.InvalidCoefficientError, "'0.3'"),
-        ("sie FunctionalsRule breaks", lambda: sie.FunctionalsRule(**kw)(np.cos, ["0.1"]),
+        ("sie functionals breaks", lambda: sie.Equation(
+            a=0.3, b=1.0, left="bounded", right="singular").functionals(np.cos, n=8,
+                                                                        breaks=["0.1"]),
          sie.InvalidBreakpointError, "'0.1'"),
+        ("sie case axis intervals", lambda: sie.Equation(
+            a=0.3, b=1.0, left="bounded", right="singular", intervals=[[("-1", 1.0)]]),
+         sie.InvalidIntervalError, "'-1'"),
+        ("sie case axis total", lambda: sie.Equation(
+            a=0.3, b=1.0, left="singular", right="singular",
+            intervals=[[(-1.0, 1.0)]]).solve(np.cos, n=8, total="1"),
+         sie.SideConditionError, "'1'"),
         ("sie solution point", lambda: sol("0.2"), sie.EvaluationPointError, "'0.2'"),
         ("sie log_potential point", lambda: sol.log_potential(["0.2"]),
          sie.EvaluationPointError, "'0.2'"),

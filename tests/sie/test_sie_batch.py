@@ -1,17 +1,18 @@
-"""Tests of :mod:`sie.batch` (``sie.DominantBatch``, ``sie.solve_batch``,
-``sie.functionals_batch``): many one-interval dominant equations
+"""Tests of an :class:`sie.Equation` with a case axis (:mod:`sie.batch`): many one-interval
+dominant equations
 
     a_i psi_i(s) + (b_i/pi) PV int_{c_i}^{d_i} psi_i(t)/(t - s) dt = f(s)
 
-solved at once.
+solved at once (intervals of shape (B, 1, 2)).
 
 References, and why each is independent of the batch code:
 
-* ``sie.solve`` with ``intervals=[(c_i, d_i)]``, one equation at a time: the scalar path
-  (``sie.unknowns.IntervalUnknown``, ``sie.assembly.assemble_and_solve``,
-  ``sie.solution.IntervalSolution``), which the batch re-implements with a batch axis in
-  its own compiled loops.  It must agree to rounding.
-* ``sie.dominant_functionals`` on f mapped to [-1, 1] (the scalar functionals path).
+* ``sie.solve`` with ``intervals=[(c_i, d_i)]``, one equation at a time: the path of one
+  equation (``sie.unknowns.IntervalUnknown``, ``sie.assembly.assemble_and_solve``,
+  ``sie.solution.IntervalSolution``), which the case axis runs with a batch axis in its
+  own compiled loops.  It must agree to rounding.
+* ``Equation.functionals`` of one equation on [-1, 1] with f mapped there (the rule of
+  one block).
 * Closed forms derived here, not read from the code: for w = (1-u)^alpha (1+u)^beta with
   alpha + beta = m in {-1, 0, 1} and cot(pi alpha) = -a/b (Muskhelishvili 1953, ch. 10;
   Tricomi 1957, sec. 4.3),
@@ -52,6 +53,13 @@ def f_smooth(s):
     reaches the rounding plateau and the chopping acts) in real coordinates."""
     s = np.asarray(s, dtype=float)
     return np.cos(1.3 * s + 0.2) + 0.4 * s - 0.1 * s * s
+
+
+def cases(a, b, left, right, iv):
+    """The equations a_i, b_i on the intervals iv[i] as one sie.Equation with a case axis
+    (scalars are shared)."""
+    return sie.Equation(a=a, b=b, left=left, right=right,
+                        intervals=np.asarray(iv, dtype=float)[:, None, :])
 
 
 def kappa_of(left, right):
@@ -133,8 +141,7 @@ def test_batch_matches_scalar_solve(ends, n):
     a, b, iv, total = random_equations(rng, B)
     k = kappa_of(left, right)
     t = total if k == 1 else None
-    sb = sie.solve_batch(f_smooth, a=a, b=b, n=n, left=left, right=right, intervals=iv,
-                         total=t)
+    sb = cases(a, b, left, right, iv).solve(f_smooth, n=n, total=t)
     assert len(sb) == B and sb.n == n and sb.kappa == k
     for i in range(B):
         assert_matches_scalar(sb, i, f_smooth, n, left, right, None if t is None else t[i])
@@ -146,8 +153,7 @@ def test_batch_solution_item_is_a_solution_of_its_equation():
     Cauchy limit (exact transforms of the basis, not the collocation equations)."""
     rng = np.random.default_rng(7)
     a, b, iv, _ = random_equations(rng, 4)
-    sb = sie.solve_batch(f_smooth, a=a, b=b, n=40, left="bounded", right="bounded",
-                         intervals=iv)
+    sb = cases(a, b, "bounded", "bounded", iv).solve(f_smooth, n=40)
     for i in range(4):
         sol = sb[i]
         assert isinstance(sol, sie.Solution)
@@ -188,7 +194,7 @@ def test_property_batch_matches_scalar_solve(ratio, bmag, sign, ends, n, cs, c0,
 
     k = kappa_of(left, right)
     t = np.full(B, total) if k == 1 else None
-    sb = sie.solve_batch(f, a=a, b=b, n=n, left=left, right=right, intervals=iv, total=t)
+    sb = cases(a, b, left, right, iv).solve(f, n=n, total=t)
     for i in range(B):
         assert_matches_scalar(sb, i, f, n, left, right, None if t is None else t[i])
 
@@ -205,38 +211,39 @@ def test_end_mass_split_matches_scalar_solve(ends, n):
     a = np.array([1e3, -1e3, 40.0, -40.0, 0.5])
     b = np.array([1.0, 1.0, -1.0, 1.0, 1.0])
     iv = np.array([(-1.0, 1.0), (0.0, 2.5), (-3.0, -2.9), (1.0, 4.0), (-0.5, 0.5)])
-    eqs = sie.DominantBatch(a=a, b=b, n=n, left=left, right=right)
+    eqs = cases(a, b, left, right, iv)
+    alpha = np.array([e.alpha for e in eqs.exponents])
+    beta = np.array([e.beta for e in eqs.exponents])
     if left == "bounded" or right == "bounded":
-        assert np.any(np.minimum(1 - eqs.alpha, 1 - eqs.beta) < 0.01)
-    k = eqs.kappa
+        assert np.any(np.minimum(1 - alpha, 1 - beta) < 0.01)
+    k, = eqs.kappa
     t = np.linspace(-1.0, 2.0, 5) if k == 1 else None
-    sb = eqs.solve(f_smooth, iv, total=t)
+    sb = eqs.solve(f_smooth, n=n, total=t)
     for i in range(5):
         assert_matches_scalar(sb, i, f_smooth, n, left, right, None if t is None else t[i])
 
 
 # --------------------------------------------------------------------------
-# functionals against sie.dominant_functionals on the mapped f
+# functionals against those of one equation on [-1, 1], f mapped there
 # --------------------------------------------------------------------------
 @pytest.mark.parametrize("n", (2, 4, 12, 40))
 @pytest.mark.parametrize("ends", ENDS, ids=END_IDS)
-def test_functionals_match_dominant_functionals(ends, n):
+def test_functionals_match_one_equation(ends, n):
     left, right = ends
     rng = np.random.default_rng(77 + n)
     a, b, iv, _ = random_equations(rng, 4)
     a = np.concatenate([a, [2e3]])              # one with a split-off end
     b = np.concatenate([b, [-1.5]])
     iv = np.vstack([iv, [(0.5, 0.75)]])
-    fb = sie.functionals_batch(f_smooth, a=a, b=b, n=n, left=left, right=right,
-                               intervals=iv)
-    same = sie.DominantBatch(a=a, b=b, n=n, left=left, right=right).functionals(f_smooth, iv)
+    fb = cases(a, b, left, right, iv).functionals(f_smooth, n=n)
+    same = cases(a, b, left, right, iv).functionals(f_smooth, n=n)
     k = kappa_of(left, right)
     assert fb.kappa == k
     for i in range(5):
         c, d = iv[i]
         h, m = 0.5 * (d - c), 0.5 * (c + d)
-        ref = sie.dominant_functionals(lambda u: f_smooth(m + h * u), a=a[i], b=b[i], n=n,
-                                       left=left, right=right)
+        ref = sie.Equation(a=a[i], b=b[i], left=left, right=right).functionals(
+            lambda u: f_smooth(m + h * u), n=n)
         assert fb.alpha[i] == ref.alpha and fb.beta[i] == ref.beta
         if k == 1:
             assert fb.integral is None and fb.consistency is None and ref.integral is None
@@ -257,10 +264,10 @@ def test_functionals_agree_with_the_solution():
     rng = np.random.default_rng(3)
     a, b, iv, _ = random_equations(rng, 6)
     for left, right in ENDS[:3]:
-        eqs = sie.DominantBatch(a=a, b=b, n=12, left=left, right=right)
-        fb, sb = eqs.functionals(f_smooth, iv), eqs.solve(f_smooth, iv)
+        eqs = cases(a, b, left, right, iv)
+        fb, sb = eqs.functionals(f_smooth, n=12), eqs.solve(f_smooth, n=12)
         np.testing.assert_allclose(fb.integral, sb.integral(), rtol=1e-13, atol=1e-15)
-        if eqs.kappa == -1:
+        if eqs.kappa == (-1,):
             np.testing.assert_allclose(fb.consistency, sb.consistency, rtol=0, atol=1e-15)
 
 
@@ -274,12 +281,10 @@ def test_semicircle_closed_form():
     mids, R = iv.mean(axis=1), 0.5 * (iv[:, 1] - iv[:, 0])
     f = lambda s: -s  # noqa: E731   (one f for all: intervals centred at 0 first)
     centred = np.column_stack([-R, R])
-    fb = sie.functionals_batch(f, a=0.0, b=1.0, n=4, left="bounded", right="bounded",
-                               intervals=centred)
+    fb = cases(0.0, 1.0, "bounded", "bounded", centred).functionals(f, n=4)
     np.testing.assert_allclose(fb.integral, np.pi * R ** 2 / 2, rtol=1e-14)
     assert np.all(np.abs(fb.consistency) <= 1e-14 * R)
-    sb = sie.solve_batch(f, a=0.0, b=1.0, n=4, left="bounded", right="bounded",
-                         intervals=centred)
+    sb = cases(0.0, 1.0, "bounded", "bounded", centred).solve(f, n=4)
     np.testing.assert_allclose(sb.integral(), np.pi * R ** 2 / 2, rtol=1e-14)
     # psi(s) = sqrt(R^2 - s^2): phi = R in the local coordinate (w = sqrt(1 - u^2))
     np.testing.assert_allclose(sb.phi_local(U), np.repeat(R[:, None], U.size, axis=1),
@@ -296,8 +301,7 @@ def test_semicircle_closed_form():
     # shifted intervals, f = m - s with the shift known per equation: one batch per equation
     for i in range(len(iv)):
         g = lambda s, m=mids[i]: m - s  # noqa: E731
-        sbi = sie.solve_batch(g, a=0.0, b=1.0, n=4, left="bounded", right="bounded",
-                              intervals=iv[i:i + 1])
+        sbi = cases(0.0, 1.0, "bounded", "bounded", iv[i:i + 1]).solve(g, n=4)
         assert abs(sbi.integral()[0] - np.pi * R[i] ** 2 / 2) <= 1e-14 * np.pi * R[i] ** 2
         assert abs(sbi.consistency[0]) <= 1e-14 * (R[i] + abs(mids[i]))
 
@@ -306,11 +310,9 @@ def test_unsolvable_constant_has_consistency_one():
     """a = 0, b = 1, both ends bounded, f = 1: no bounded solution; the solvability
     residual is the weighted mean of f against (1-u)^{-1/2}(1+u)^{-1/2} over its mass: 1."""
     iv = [(-1.0, 1.0), (2.0, 7.0), (-0.01, 0.0)]
-    fb = sie.functionals_batch(np.ones_like, a=0.0, b=1.0, n=4, left="bounded",
-                               right="bounded", intervals=iv)
+    fb = cases(0.0, 1.0, "bounded", "bounded", iv).functionals(np.ones_like, n=4)
     np.testing.assert_allclose(fb.consistency, 1.0, rtol=1e-14)
-    sb = sie.solve_batch(np.ones_like, a=0.0, b=1.0, n=4, left="bounded",
-                         right="bounded", intervals=iv)
+    sb = cases(0.0, 1.0, "bounded", "bounded", iv).solve(np.ones_like, n=4)
     np.testing.assert_allclose(sb.consistency, 1.0, rtol=1e-14)
     assert np.all(np.abs(sb.coefficients) <= 1e-15)          # psi = 0 for f minus its mean
 
@@ -336,11 +338,11 @@ def test_jacobi_weight_closed_form(ends):
     """psi = w solves a psi + b H[psi] = -b p_m(u)/sin(pi alpha) (module docstring), so
     phi = 1 and int psi = h mu_0, for any a/b (end split included) and interval."""
     left, right = ends
-    cases = [(r * b, b) for r in RATIOS for b in (1.0, -0.5)]
+    coefficients = [(r * b, b) for r in RATIOS for b in (1.0, -0.5)]
     iv = np.array([(-1.0, 1.0), (0.0, 0.3), (-5.0, 2.0), (2.0, 2.001), (-3.0, -1.0),
                    (1.0, 2.0), (-0.5, 0.25), (10.0, 14.0), (-1.0, 1.0), (0.0, 1.0)])
     m = {("singular", "singular"): -1, ("bounded", "bounded"): 1}.get(ends, 0)
-    for i, (a_i, b_i) in enumerate(cases):
+    for i, (a_i, b_i) in enumerate(coefficients):
         alpha, beta = _exponents(a_i, b_i, left, right)
         c, d = iv[i]
         h, mid = 0.5 * (d - c), 0.5 * (c + d)
@@ -354,8 +356,8 @@ def test_jacobi_weight_closed_form(ends):
         n = 6
         k = -m
         total = h * _mu0(alpha, beta) if k == 1 else None
-        sb = sie.solve_batch(f, a=[a_i], b=[b_i], n=n, left=left, right=right,
-                             intervals=iv[i:i + 1], total=None if total is None else [total])
+        sb = cases([a_i], [b_i], left, right, iv[i:i + 1]).solve(
+            f, n=n, total=None if total is None else [total])
         assert abs(sb.alpha[0] - alpha) <= 1e-15 and abs(sb.beta[0] - beta) <= 1e-15
         c_ex = np.zeros(n)
         c_ex[0] = 1.0
@@ -365,8 +367,7 @@ def test_jacobi_weight_closed_form(ends):
             fmax = np.max(np.abs(f(mid + h * U)))
             assert abs(sb.consistency[0]) <= 1e-13 * fmax
         if k <= 0:
-            fb = sie.functionals_batch(f, a=[a_i], b=[b_i], n=n, left=left,
-                                       right=right, intervals=iv[i:i + 1])
+            fb = cases([a_i], [b_i], left, right, iv[i:i + 1]).functionals(f, n=n)
             assert abs(fb.integral[0] / (h * _mu0(alpha, beta)) - 1.0) <= 1e-12
         # the Cauchy limit: H[w] + i w at interior points
         u = np.array([-0.8, -0.1, 0.35, 0.9])
@@ -417,7 +418,7 @@ def test_weight_identity_by_mpmath():
 # independence of the other equations, take
 # --------------------------------------------------------------------------
 def _solve_all(a, b, iv, t, n, left, right):
-    return sie.DominantBatch(a=a, b=b, n=n, left=left, right=right).solve(f_smooth, iv, total=t)
+    return cases(a, b, left, right, iv).solve(f_smooth, n=n, total=t)
 
 
 @pytest.mark.parametrize("n", (3, 12, 40))
@@ -436,8 +437,7 @@ def test_result_does_not_depend_on_the_rest_of_the_batch(ends, n):
                            right)
     sub = np.array([5, 0, 2])
     part = _solve_all(a[sub], b[sub], iv[sub], None if t is None else t[sub], n, left, right)
-    fb_full = sie.functionals_batch(f_smooth, a=a, b=b, n=n, left=left, right=right,
-                                    intervals=iv)
+    fb_full = cases(a, b, left, right, iv).functionals(f_smooth, n=n)
     for i in range(7):
         alone = _solve_all(a[i:i + 1], b[i:i + 1], iv[i:i + 1],
                            None if t is None else t[i:i + 1], n, left, right)
@@ -453,8 +453,8 @@ def test_result_does_not_depend_on_the_rest_of_the_batch(ends, n):
             assert np.array_equal(full.cauchy_limit_local(U)[i],
                                   other.cauchy_limit_local(U)[j])
         if k != 1:
-            fb_alone = sie.functionals_batch(f_smooth, a=a[i:i + 1], b=b[i:i + 1], n=n,
-                                             left=left, right=right, intervals=iv[i:i + 1])
+            fb_alone = cases(a[i:i + 1], b[i:i + 1], left, right, iv[i:i + 1]).functionals(
+                f_smooth, n=n)
             assert fb_full.integral[i] == fb_alone.integral[0]
             if k == -1:
                 assert fb_full.consistency[i] == fb_alone.consistency[0]
@@ -462,7 +462,7 @@ def test_result_does_not_depend_on_the_rest_of_the_batch(ends, n):
 
 @pytest.mark.parametrize("ends", ENDS, ids=END_IDS)
 def test_take(ends):
-    """DominantBatch.take keeps the rules of the chosen equations: solving with it is
+    """Equation.take keeps the prepared rules of the chosen cases: solving with it is
     solving the subset afresh; SolutionBatch.take is the subset of the solutions."""
     left, right = ends
     rng = np.random.default_rng(5)
@@ -471,15 +471,17 @@ def test_take(ends):
     k = kappa_of(left, right)
     t = total if k == 1 else None
     idx = [4, 1, 1, 0]
-    eqs = sie.DominantBatch(a=a, b=b, n=12, left=left, right=right)
+    eqs = cases(a, b, left, right, iv)
+    eqs.solve(f_smooth, n=12, total=t)                   # the rules of n = 12, prepared
     sub_eqs = eqs.take(idx)
-    fresh = sie.DominantBatch(a=a[idx], b=b[idx], n=12, left=left, right=right)
-    assert len(sub_eqs) == 4 and sub_eqs.kappa == k
-    assert np.array_equal(sub_eqs.alpha, fresh.alpha) and np.array_equal(sub_eqs.beta, fresh.beta)
+    fresh = cases(a[idx], b[idx], left, right, iv[idx])
+    assert sub_eqs.cases == 4 and sub_eqs.kappa == (k,)
+    assert sub_eqs.exponents == fresh.exponents
+    assert np.array_equal(sub_eqs.intervals, fresh.intervals)
     t_sub = None if t is None else t[idx]
-    s1 = sub_eqs.solve(f_smooth, iv[idx], total=t_sub)
-    s2 = fresh.solve(f_smooth, iv[idx], total=t_sub)
-    s3 = eqs.solve(f_smooth, iv, total=t).take(idx)
+    s1 = sub_eqs.solve(f_smooth, n=12, total=t_sub)
+    s2 = fresh.solve(f_smooth, n=12, total=t_sub)
+    s3 = eqs.solve(f_smooth, n=12, total=t).take(idx)
     for s in (s1, s3):
         assert np.array_equal(s.coefficients, s2.coefficients)
         assert np.array_equal(s.intervals, s2.intervals)
@@ -490,18 +492,16 @@ def test_take(ends):
         assert len(s) == 4
     assert not s3.coefficients.flags.writeable
     if k != 1:
-        f1 = sub_eqs.functionals(f_smooth, iv[idx])
-        f2 = fresh.functionals(f_smooth, iv[idx])
+        f1 = sub_eqs.functionals(f_smooth, n=12)
+        f2 = fresh.functionals(f_smooth, n=12)
         assert np.array_equal(f1.integral, f2.integral)
 
 
 def test_scalar_coefficients_broadcast():
     """a or b given once is shared by every equation."""
     iv = [(-1.0, 1.0), (0.0, 2.0), (3.0, 3.5)]
-    s1 = sie.solve_batch(f_smooth, a=0.4, b=[1.0, 1.0, 1.0], n=6, left="singular",
-                         right="bounded", intervals=iv)
-    s2 = sie.solve_batch(f_smooth, a=[0.4] * 3, b=1.0, n=6, left="singular",
-                         right="bounded", intervals=iv)
+    s1 = cases(0.4, [1.0, 1.0, 1.0], "singular", "bounded", iv).solve(f_smooth, n=6)
+    s2 = cases([0.4] * 3, 1.0, "singular", "bounded", iv).solve(f_smooth, n=6)
     assert np.array_equal(s1.coefficients, s2.coefficients)
     assert np.array_equal(s1.a, [0.4] * 3) and np.array_equal(s1.b, [1.0] * 3)
 
@@ -526,96 +526,117 @@ def test_f_called_once_per_call(ends):
     a = np.array([0.3, 1e3, -1e3, -2.0])
     b = np.array([1.0, 1.0, 1.0, 0.5])
     iv = np.array([(-1.0, 1.0), (0.0, 2.0), (3.0, 3.5), (-2.0, -1.0)])
-    eqs = sie.DominantBatch(a=a, b=b, n=12, left=left, right=right)
-    t = np.ones(4) if eqs.kappa == 1 else None
+    eqs = cases(a, b, left, right, iv)
+    k, = eqs.kappa
+    t = np.ones(4) if k == 1 else None
     f = CountingF()
-    eqs.solve(f, iv, total=t)
+    eqs.solve(f, n=12, total=t)
     assert f.calls == 1
     f = CountingF()
-    fb = eqs.functionals(f, iv)
-    # index 1: int psi is the side condition, nothing to compute (as dominant_functionals)
-    assert f.calls == (0 if eqs.kappa == 1 else 1)
-    if eqs.kappa == 1:
+    fb = eqs.functionals(f, n=12)
+    # index 1: int psi is the side condition, nothing to compute
+    assert f.calls == (0 if k == 1 else 1)
+    if k == 1:
         assert fb.integral is None and fb.consistency is None
     f = CountingF()
-    sie.solve_batch(f, a=a, b=b, n=40, left=left, right=right, intervals=iv, total=t)
+    eqs.solve(f, n=40, total=t)
     assert f.calls == 1
 
 
 # --------------------------------------------------------------------------
 # errors
 # --------------------------------------------------------------------------
-BB = dict(n=4, left="bounded", right="bounded")
+BB = dict(left="bounded", right="bounded")
 
 
 def test_error_coefficients():
+    iv = [(0.0, 1.0), (1.0, 2.0)]
     with pytest.raises(sie.InvalidCoefficientError, match="nonzero"):
-        sie.DominantBatch(a=[0.0, 1.0], b=[1.0, 0.0], **BB)
+        cases([0.0, 1.0], [1.0, 0.0], "bounded", "bounded", iv)
     with pytest.raises(sie.InvalidCoefficientError, match="finite"):
-        sie.DominantBatch(a=[0.0, np.nan], b=1.0, **BB)
+        cases([0.0, np.nan], 1.0, "bounded", "bounded", iv)
     with pytest.raises(sie.InvalidCoefficientError, match="finite"):
-        sie.solve_batch(f_smooth, a=0.0, b=np.inf, intervals=[(0.0, 1.0)], **BB)
-    with pytest.raises(sie.InvalidCoefficientError, match="equal-length"):
-        sie.DominantBatch(a=[0.0, 1.0], b=[1.0, 1.0, 1.0], **BB)
+        cases(0.0, np.inf, "bounded", "bounded", iv)
+    with pytest.raises(sie.InvalidCoefficientError, match="one per case"):
+        cases([0.0, 1.0], [1.0, 1.0, 1.0], "bounded", "bounded", iv)
+    with pytest.raises(sie.InvalidCoefficientError, match="finite real number"):
+        cases(["0.3", 1.0], 1.0, "bounded", "bounded", iv)         # text is refused
     with pytest.raises(sie.InvalidCoefficientError, match="at least one equation"):
-        sie.DominantBatch(a=[], b=1.0, **BB)
-    with pytest.raises(sie.InvalidCoefficientError, match="at least one equation"):
-        sie.solve_batch(f_smooth, a=[], b=[], intervals=np.empty((0, 2)), **BB)
+        sie.Equation(a=[], b=[], intervals=np.empty((0, 1, 2)), **BB)
 
 
 def test_error_ends_and_order():
+    iv = [(0.0, 1.0)]
     with pytest.raises(sie.InvalidEndConditionError, match="left"):
-        sie.DominantBatch(a=0.0, b=1.0, n=4, left="free", right="bounded")
+        cases(0.0, 1.0, "free", "bounded", iv)
     with pytest.raises(sie.InvalidEndConditionError, match="right"):
-        sie.solve_batch(f_smooth, a=0.0, b=1.0, n=4, left="bounded", right=None,
-                        intervals=[(0.0, 1.0)])
-    with pytest.raises(sie.InvalidOrderError, match="n must be"):
-        sie.DominantBatch(a=0.0, b=1.0, n=0, left="bounded", right="bounded")
+        cases(0.0, 1.0, "bounded", None, iv)
+    with pytest.raises(sie.PerIntervalArgumentError, match="shared by the cases"):
+        cases(0.0, 1.0, ["bounded"], "bounded", iv)
+    eqs = cases(0.0, 1.0, "bounded", "bounded", iv)
+    ss = cases(0.0, 1.0, "singular", "singular", iv)
+    for call in (eqs.solve, eqs.functionals):
+        with pytest.raises(sie.InvalidOrderError, match="n must be"):
+            call(f_smooth, n=0)
+        with pytest.raises(sie.InvalidOrderError, match="n must be"):
+            call(f_smooth, n=2.5)
+        with pytest.raises(sie.InvalidOrderError, match="limit"):
+            call(f_smooth, n=sie.N_MAX + 1)
     with pytest.raises(sie.InvalidOrderError, match="index 1"):
-        sie.DominantBatch(a=0.0, b=1.0, n=1, left="singular", right="singular")
-    with pytest.raises(sie.InvalidOrderError, match="n must be"):
-        sie.DominantBatch(a=0.0, b=1.0, n=2.5, left="bounded", right="bounded")
-    with pytest.raises(sie.InvalidOrderError, match="limit"):
-        sie.DominantBatch(a=0.0, b=1.0, n=sie.N_MAX + 1, left="bounded", right="bounded")
+        ss.solve(f_smooth, n=1, total=1.0)
 
 
 @pytest.mark.parametrize("intervals, word", [
-    ([(0.0, 1.0)], "shape"),                            # one pair for two equations
-    ([(0.0, 1.0), (1.0, 2.0), (2.0, 3.0)], "shape"),
-    ([0.0, 1.0], "shape"),
-    ([(0.0, 1.0, 2.0), (1.0, 2.0, 3.0)], "shape"),
-    ([(0.0, 1.0), (2.0, 2.0)], "c < d"),                # c = d
-    ([(1.0, 0.0), (2.0, 3.0)], "c < d"),                # c > d
-    ([(0.0, 1.0), (np.nan, 3.0)], "finite"),
-    ([(0.0, np.inf), (1.0, 3.0)], "finite"),
-    ([("x", 1.0), (1.0, 3.0)], "pairs of numbers"),
+    ([[(0.0, 1.0)]], "shape"),                          # one pair for two equations
+    ([[(0.0, 1.0)], [(1.0, 2.0)], [(2.0, 3.0)]], "shape"),
+    ([(0.0, 1.0), (1.5, 2.0)], "shape"),                # no case axis
+    ([[(0.0, 1.0, 2.0)], [(1.0, 2.0, 3.0)]], "shape"),
+    ([[(0.0, 1.0)], [(2.0, 2.0)]], "c < d"),            # c = d
+    ([[(1.0, 0.0)], [(2.0, 3.0)]], "c < d"),            # c > d
+    ([[(0.0, 1.0)], [(np.nan, 3.0)]], "finite"),
+    ([[(0.0, np.inf)], [(1.0, 3.0)]], "finite"),
+    ([[("x", 1.0)], [(1.0, 3.0)]], "real numbers"),
 ])
 def test_error_intervals(intervals, word):
-    eqs = sie.DominantBatch(a=[0.0, 0.5], b=1.0, **BB)
+    eqs = cases([0.0, 0.5], 1.0, "bounded", "bounded", [(0.0, 1.0), (0.0, 2.0)])
     with pytest.raises(sie.InvalidIntervalError, match=word):
-        eqs.solve(f_smooth, intervals)
-    with pytest.raises(sie.InvalidIntervalError, match=word):
-        eqs.functionals(f_smooth, intervals)
+        eqs.on(intervals)
+    if np.ndim(intervals) == 3 and np.shape(intervals)[-1] == 2 and len(intervals) == 2:
+        with pytest.raises(sie.InvalidIntervalError, match=word):
+            sie.Equation(a=[0.0, 0.5], b=1.0, intervals=intervals, **BB)
+
+
+def test_error_unsupported_case_axis():
+    """A case axis holds one-interval equations without a kernel or breaks."""
+    with pytest.raises(sie.UnsupportedEquationError, match="one-interval"):
+        sie.Equation(a=0.0, b=1.0, intervals=[[(0.0, 1.0), (2.0, 3.0)]], **BB)
+    with pytest.raises(sie.UnsupportedEquationError, match="kernel"):
+        sie.Equation(a=0.0, b=1.0, intervals=[[(0.0, 1.0)]], kernel=lambda s, t: s * t, **BB)
+    eqs = cases(0.0, 1.0, "bounded", "bounded", [(0.0, 1.0)])
+    with pytest.raises(sie.UnsupportedEquationError, match="breaks"):
+        eqs.solve(f_smooth, n=4, breaks=[0.5])
+    with pytest.raises(sie.UnsupportedEquationError, match="breaks"):
+        eqs.functionals(f_smooth, n=4, breaks=[0.5])
 
 
 def test_error_side_condition():
     iv = [(0.0, 1.0), (1.0, 2.0)]
-    ss = sie.DominantBatch(a=[0.0, 0.5], b=1.0, n=4, left="singular", right="singular")
+    ss = cases([0.0, 0.5], 1.0, "singular", "singular", iv)
     with pytest.raises(sie.SideConditionError, match="required"):
-        ss.solve(f_smooth, iv)
-    with pytest.raises(sie.SideConditionError, match="one finite number per equation"):
-        ss.solve(f_smooth, iv, total=[1.0])
-    with pytest.raises(sie.SideConditionError, match="one finite number per equation"):
-        ss.solve(f_smooth, iv, total=[1.0, np.nan])
+        ss.solve(f_smooth, n=4)
+    with pytest.raises(sie.SideConditionError, match="one finite number per case"):
+        ss.solve(f_smooth, n=4, total=[1.0, 1.0, 1.0])
+    with pytest.raises(sie.SideConditionError, match="one finite number per case"):
+        ss.solve(f_smooth, n=4, total=[1.0, np.nan])
+    with pytest.raises(sie.SideConditionError, match="real numbers"):
+        ss.solve(f_smooth, n=4, total=["1.0", 1.0])
     for left, right in ENDS[:3]:
-        eqs = sie.DominantBatch(a=[0.0, 0.5], b=1.0, n=4, left=left, right=right)
+        eqs = cases([0.0, 0.5], 1.0, left, right, iv)
         with pytest.raises(sie.SideConditionError, match="must not be given"):
-            eqs.solve(f_smooth, iv, total=[1.0, 1.0])
-    with pytest.raises(sie.SideConditionError, match="must not be given"):
-        sie.solve_batch(f_smooth, a=0.0, b=1.0, intervals=iv, total=0.0, **BB)
+            eqs.solve(f_smooth, n=4, total=[1.0, 1.0])
     # a scalar total is shared
-    s1 = ss.solve(f_smooth, iv, total=2.0)
-    s2 = ss.solve(f_smooth, iv, total=[2.0, 2.0])
+    s1 = ss.solve(f_smooth, n=4, total=2.0)
+    s2 = ss.solve(f_smooth, n=4, total=[2.0, 2.0])
     assert np.array_equal(s1.coefficients, s2.coefficients)
 
 
@@ -626,21 +647,21 @@ def test_error_side_condition():
     (lambda s: np.stack([s, s]), "vectorised"),
     (lambda s: s + 1j, "real"),
     (lambda s: 1.0 / (s - s), "non-finite"),
-    (3.0, "f raised"),                                   # not callable
+    (3.0, "f must be a vectorised callable"),            # not callable
 ])
 def test_error_callable_output(f, word):
-    eqs = sie.DominantBatch(a=[0.0, 0.5, 1e3], b=1.0, **BB)
-    iv = [(0.0, 1.0), (0.25, 2.0), (-1.0, 1.0)]
+    eqs = cases([0.0, 0.5, 1e3], 1.0, "bounded", "bounded",
+                [(0.0, 1.0), (0.25, 2.0), (-1.0, 1.0)])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)      # 1/0 in the f itself
         with pytest.raises(sie.CallableOutputError, match=word):
-            eqs.solve(f, iv)
+            eqs.solve(f, n=4)
         with pytest.raises(sie.CallableOutputError, match=word):
-            eqs.functionals(f, iv)
+            eqs.functionals(f, n=4)
 
 
 def test_error_evaluation_point():
-    sb = sie.solve_batch(f_smooth, a=0.0, b=1.0, intervals=[(0.0, 1.0)], **BB)
+    sb = cases(0.0, 1.0, "bounded", "bounded", [(0.0, 1.0)]).solve(f_smooth, n=4)
     for u in ([1.0], [-1.0], [0.0, 1.5], [np.nan]):
         with pytest.raises(sie.EvaluationPointError, match="strictly inside"):
             sb.cauchy_limit_local(np.array(u))
@@ -650,9 +671,9 @@ def test_error_evaluation_point():
 def test_errors_are_sie_input_errors():
     """Every input error is an SIEInputError (one except clause catches them all)."""
     with pytest.raises(sie.SIEInputError):
-        sie.DominantBatch(a=0.0, b=0.0, **BB)
+        cases(0.0, 0.0, "bounded", "bounded", [(0.0, 1.0)])
     with pytest.raises(sie.SIEInputError):
-        sie.solve_batch(f_smooth, a=0.0, b=1.0, intervals=[(1.0, 0.0)], **BB)
+        cases(0.0, 1.0, "bounded", "bounded", [(1.0, 0.0)])
 
 
 @pytest.mark.filterwarnings("ignore::sie.InconsistentEquationWarning")
@@ -661,8 +682,8 @@ def test_batch_of_its_own_solutions_is_the_batch():
     """SolutionBatch.of rebuilds a batch from the sie.Solution of each equation (what a
     contact result keeps): the same arrays, and the same Cauchy limits; solutions on several
     intervals, with breaks, or of different indices are refused."""
-    sb = sie.solve_batch(f_smooth, a=[0.3, -1.2, 4.0], b=[1.0, -2.0, 0.5],
-                         intervals=[(-1.0, 0.5), (0.0, 2.0), (-3.0, -1.0)], **BB)
+    sb = cases([0.3, -1.2, 4.0], [1.0, -2.0, 0.5], "bounded", "bounded",
+               [(-1.0, 0.5), (0.0, 2.0), (-3.0, -1.0)]).solve(f_smooth, n=4)
     again = sie.SolutionBatch.of([sb[i] for i in range(len(sb))])
     for name in ("intervals", "a", "b", "alpha", "beta", "coefficients", "consistency", "mu0"):
         assert np.array_equal(getattr(again, name), getattr(sb, name)), name

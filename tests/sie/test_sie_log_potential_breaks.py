@@ -169,13 +169,14 @@ def test_clustered_log_sum_is_the_direct_sum():
 
 
 def test_batch_projection_at_large_n():
-    """sie.DominantBatch at n = 1500 (the projections by the recurrence over all nodes)
-    against the scalar sie.solve of each equation (Vandermonde blocks and BLAS), to 1e-13
-    of the largest coefficient."""
+    """An sie.Equation with a case axis at n = 1500 (the projections by the recurrence over
+    all nodes) against the sie.solve of each equation alone (Vandermonde blocks and BLAS),
+    to 1e-13 of the largest coefficient."""
     f = lambda s: np.cos(2.0 * s) + 0.3 * s
-    eqs = sie.DominantBatch(a=[0.4, -0.8], b=1.0, n=1500, left="singular", right="bounded")
     iv = [(-1.0, 1.0), (-0.5, 2.0)]
-    batch = eqs.solve(f, iv)
+    eqs = sie.Equation(a=[0.4, -0.8], b=1.0, left="singular", right="bounded",
+                       intervals=[[p] for p in iv])
+    batch = eqs.solve(f, n=1500)
     for i, (c, d) in enumerate(iv):
         one = sie.solve(f, a=float(eqs.a[i]), b=1.0, n=1500, left="singular", right="bounded",
                         intervals=[(c, d)], check_residual=False)

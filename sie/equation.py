@@ -1,0 +1,595 @@
+"""The equation object: a Cauchy singular integral equation of the second kind, validated once.
+
+    a_j psi(s) + (b_j/pi) PV int_L psi(t)/(t - s) dt + int_L k_j(s, t) psi(t) dt = f(s),
+    s in L_j,   L = L_1 U ... U L_J,
+
+an immutable :class:`Equation` made of :class:`Block` s: block j is the pair (the unknown
+psi_j = psi on L_j, the equation collocated on L_j), with its own coefficients a_j, b_j, its
+own kernel row k_j and its end choices.  Everything the solver needs that does not depend on
+the right-hand side or the number of coefficients is checked and computed here once (the
+coefficients, the end exponents, the intervals); :meth:`Equation.solve` and
+:meth:`Equation.functionals` then take f and n, and :meth:`Equation.on` moves the equation to
+other intervals (a search over free ends) without checking the rest again.
+
+A leading case axis: intervals of shape (B, 1, 2) make B independent one-interval equations
+with their own a_i, b_i (shape (B,)) and shared end choices, solved stage by stage for all
+B at once (:mod:`sie.batch`): a parameter sweep, where the Python around a solve of a few
+coefficients costs more than its arithmetic.
+
+References: Erdogan, Gupta & Cook (1973), ch. 7; Krenk, Quart. Appl. Math. 33 (1975) 225;
+Muskhelishvili, Singular Integral Equations (1953), ch. 10.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import (CallableOutputError, InvalidCoefficientError, InvalidIntervalError,
+                     PerIntervalArgumentError, SideConditionError, UnsupportedEquationError,
+                     real_array)
+from .exponents import Exponents, check_coefficients, check_end, exponents_of
+from .intervals import Interval, check_intervals, per_interval
+from .batch import CaseRules
+from .solver import block_functionals, solve_blocks
+
+__all__ = ["Equation", "Block", "solve"]
+
+
+@dataclass(frozen=True)
+class Block:
+    """One block of an :class:`Equation`: the unknown psi_j on the interval L_j and the
+    equation collocated there,
+
+        a psi(s) + (b/pi) PV int_L psi(t)/(t - s) dt + int_L k(s, t) psi(t) dt = f(s),
+        s in L_j.
+
+    Attributes
+    ----------
+    interval : Interval
+        L_j = [c, d].
+    a, b : float
+        The coefficients on L_j (b != 0).
+    left, right : {"bounded", "singular"}
+        psi's behaviour at c and d.
+    exponents : Exponents
+        alpha (at d), beta (at c) and the index (:func:`sie.sie_exponents`).
+    kernel : callable or None
+        k(s, t) for s in L_j and t anywhere on L (None: no kernel on this row).
+
+    References
+    ----------
+    Muskhelishvili, Singular Integral Equations (1953), ch. 10 (the exponents of each end).
+
+    Examples
+    --------
+    >>> import sie
+    >>> blk = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded").blocks[0]
+    >>> (blk.interval.c, blk.interval.d), blk.exponents.kappa
+    ((-1.0, 1.0), -1)
+    """
+    interval: Interval
+    a: float
+    b: float
+    left: str
+    right: str
+    exponents: Exponents
+    kernel: object = None
+
+    @property
+    def kappa(self) -> int:
+        """The index -(alpha + beta) of the block."""
+        return self.exponents.kappa
+
+
+def _check_callable(name, fn, what):
+    if not callable(fn):
+        raise CallableOutputError(f"{name} must be a {what}, got {type(fn).__name__}")
+
+
+def _kernels(kernel, J):
+    """One kernel row per block: a callable (or None) shared by all, or a sequence of J."""
+    if kernel is None or callable(kernel):
+        return [kernel] * J
+    if isinstance(kernel, (str, bytes)) or np.ndim(kernel) == 0:
+        _check_callable("kernel", kernel, "callable k(s, t), a sequence of them (one per "
+                        "interval), or None")
+    rows = per_interval("kernel", kernel, J)
+    for j, k in enumerate(rows):
+        if k is not None:
+            _check_callable(f"kernel[{j}]", k, "callable k(s, t) or None")
+    return rows
+
+
+class Equation:
+    """a_j psi + (b_j/pi) PV int_L psi/(t - s) dt + int_L k_j(s, t) psi dt = f on L_j,
+    validated once (immutable).
+
+    Parameters
+    ----------
+    a, b : float or sequence of float
+        The coefficients, shared by all intervals or one per interval (b != 0 and |b/a|
+        resolvable in double precision: see :func:`sie.sie_exponents`); with a case axis,
+        one per case (shape (B,)) or shared.
+    left, right : {"bounded", "singular"} or a sequence of them
+        psi's behaviour at the left and the right end of each interval (shared by the
+        cases of a case axis).
+    intervals : array_like, optional
+        L as J disjoint ascending (c, d) pairs, shape (J, 2); default the single interval
+        [-1, 1].  With it, the per-interval attributes of a :class:`sie.Solution` are
+        tuples.  Shape (B, 1, 2): a case axis of B one-interval equations.
+    kernel : callable, sequence of callables, or None
+        k(s, t), vectorised over two arrays of equal shape and bounded on L x L; one per
+        interval (the kernel of the rows collocated there; None for none) or one for all.
+
+    Attributes
+    ----------
+    blocks : tuple of Block
+        The (unknown, interval) pairs, left to right (one-interval cases: those of case 0).
+    cases : int or None
+        B with a case axis, else None.
+    intervals : ndarray
+        Shape (J, 2), or (B, 1, 2) with a case axis.
+    a, b : ndarray
+        Shape (J,), or (B,) with a case axis.
+    kappa : tuple of int
+        The index of each block (shared by the cases).
+
+    Raises
+    ------
+    InvalidCoefficientError
+        a or b not finite, b = 0, or |b/a| not resolvable; shapes that do not match.
+    InvalidEndConditionError
+        ``left`` or ``right`` not "bounded" or "singular".
+    InvalidIntervalError
+        ``intervals`` not finite, ascending and disjoint (each case's interval: c < d).
+    PerIntervalArgumentError
+        A per-interval argument whose length does not match the intervals.
+    CallableOutputError
+        ``kernel`` not callable.
+    UnsupportedEquationError
+        A case axis with a kernel or several intervals per case.
+
+    Notes
+    -----
+    Per interval, psi = w phi with w = (1-u)^alpha (1+u)^beta, the exponents from
+    cot(pi alpha0) = -a_j/b_j and the end choices, phi a Jacobi series, and the equation
+    collocated at the roots of P_{n-kappa}^{(-alpha,-beta)}, where the dominant operator
+    maps the basis exactly (Erdogan, Gupta & Cook 1973; Krenk 1975).  The intervals couple
+    through the exact Cauchy transforms of the Jacobi basis (:mod:`sie.cauchy`).
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+    equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+    Noordhoff (1973), ch. 7.  N. I. Muskhelishvili, Singular Integral Equations (1953).
+
+    Examples
+    --------
+    (1/pi) PV int sqrt(1 - t^2) / (t - s) dt = -s on (-1, 1): with a = 0, b = 1 and both
+    ends bounded (index -1) f = -s gives psi = sqrt(1 - s^2):
+
+    >>> import numpy as np, sie
+    >>> eq = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded")
+    >>> sol = eq.solve(lambda s: -s, n=4)
+    >>> [round(float(v), 12) for v in sol(np.array([0.0, 0.6]))]
+    [1.0, 0.8]
+    >>> fn = eq.functionals(lambda s: -s, n=4)        # int psi = pi/2, solvable
+    >>> round(fn.integral / (np.pi / 2), 12), abs(fn.consistency) < 1e-14
+    (1.0, True)
+
+    The same f on the intervals [-R, R], R = 1, 2, as a case axis: psi = sqrt(R^2 - s^2):
+
+    >>> cases = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded",
+    ...                      intervals=[[(-1.0, 1.0)], [(-2.0, 2.0)]])
+    >>> cases.cases, np.round(cases.solve(lambda s: -s, n=4).integral() / np.pi, 12).tolist()
+    (2, [0.5, 2.0])
+    """
+
+    __slots__ = ("blocks", "cases", "intervals", "a", "b", "kappa", "_multi", "_ends",
+                 "_exps", "_prepared", "_kernel")
+
+    def __init__(self, *, a, b, left, right, intervals=None, kernel=None):
+        iv = None if intervals is None else _as_interval_array(intervals)
+        if iv is not None:
+            self._init_cases(a, b, left, right, iv, kernel)
+            return
+        ivs = check_intervals(intervals)
+        J = len(ivs)
+        A = [check_coefficients(ai, bi) for ai, bi in
+             zip(per_interval("a", a, J), per_interval("b", b, J))]
+        lefts = [check_end("left", v) for v in per_interval("left", left, J)]
+        rights = [check_end("right", v) for v in per_interval("right", right, J)]
+        kernels = _kernels(kernel, J)
+        blocks = tuple(Block(iv_j, aj, bj, l, r, exponents_of(aj, bj, l, r), k)
+                       for iv_j, (aj, bj), l, r, k in zip(ivs, A, lefts, rights, kernels))
+        self._set(blocks, None, intervals is not None, kernel)
+
+    def _set(self, blocks, cases, multi, kernel, prepared=None):
+        s = object.__setattr__
+        s(self, "blocks", blocks)
+        s(self, "cases", cases)
+        s(self, "_multi", multi)
+        s(self, "_kernel", kernel)
+        s(self, "intervals", np.array([(b.interval.c, b.interval.d) for b in blocks]))
+        s(self, "a", np.array([b.a for b in blocks]))
+        s(self, "b", np.array([b.b for b in blocks]))
+        s(self, "kappa", tuple(b.kappa for b in blocks))
+        s(self, "_ends", tuple((b.left, b.right) for b in blocks))
+        s(self, "_exps", tuple(b.exponents for b in blocks))
+        s(self, "_prepared", {} if prepared is None else prepared)
+        for name in ("intervals", "a", "b"):
+            getattr(self, name).flags.writeable = False
+
+    def _init_cases(self, a, b, left, right, iv, kernel):
+        B, J = iv.shape[:2]
+        if J != 1 or kernel is not None:
+            raise UnsupportedEquationError(
+                f"a case axis (intervals of shape (B, J, 2)) holds one-interval equations "
+                f"without a kernel; got J = {J}{' and a kernel' if kernel is not None else ''} "
+                f"(solve such equations one by one)")
+        if B == 0:
+            raise InvalidCoefficientError("a case axis must hold at least one equation, got none")
+        good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
+        if not good.all():
+            k = int(np.flatnonzero(~good)[0])
+            raise InvalidIntervalError(f"intervals[{k}] must be a finite (c, d) with c < d, "
+                                       f"got {tuple(iv[k, 0].tolist())}")
+        A, Bv = _case_coefficients(a, b, B)
+        left, right = check_end("left", _one(left, "left")), check_end("right", _one(right, "right"))
+        exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(A.tolist(), Bv.tolist()))
+        self._set_cases(iv, A, Bv, left, right, exps, None)
+
+    def _set_cases(self, iv, A, Bv, left, right, exps, prepared):
+        s = object.__setattr__
+        iv = np.array(iv, dtype=float)
+        blk = Block(Interval(float(iv[0, 0, 0]), float(iv[0, 0, 1])), float(A[0]),
+                    float(Bv[0]), left, right, exps[0])
+        s(self, "blocks", (blk,))
+        s(self, "cases", int(iv.shape[0]))
+        s(self, "_multi", True)
+        s(self, "_kernel", None)
+        s(self, "intervals", iv)
+        s(self, "a", np.array(A, dtype=float))
+        s(self, "b", np.array(Bv, dtype=float))
+        s(self, "kappa", (exps[0].kappa,))
+        s(self, "_ends", ((left, right),))
+        s(self, "_exps", exps)
+        s(self, "_prepared", {} if prepared is None else prepared)
+        for name in ("intervals", "a", "b"):
+            getattr(self, name).flags.writeable = False
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"sie.Equation is immutable (tried to set {name!r})")
+
+    def __repr__(self):
+        if self.cases is not None:
+            l, r = self._ends[0]
+            return f"Equation({self.cases} cases, left={l!r}, right={r!r})"
+        parts = ", ".join(f"[{b.interval.c:g}, {b.interval.d:g}] a={b.a:g} b={b.b:g} "
+                          f"{b.left}/{b.right}" for b in self.blocks)
+        k = ", kernel" if any(b.kernel is not None for b in self.blocks) else ""
+        return f"Equation({parts}{k})"
+
+    # -- the same equation elsewhere ---------------------------------------------------------
+    def on(self, intervals) -> "Equation":
+        """The same coefficients, end choices and kernel on other intervals of the same
+        count (or, with a case axis, one interval per case: shape (B, 1, 2)); only the
+        intervals are checked.  For searches over the ends of the intervals."""
+        out = object.__new__(Equation)
+        if self.cases is not None:
+            iv = _as_interval_array(intervals)
+            if iv is None or iv.shape != (self.cases, 1, 2):
+                raise InvalidIntervalError(f"intervals must have the case axis' shape "
+                                           f"({self.cases}, 1, 2); got {np.shape(intervals)}")
+            good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
+            if not good.all():
+                k = int(np.flatnonzero(~good)[0])
+                raise InvalidIntervalError(f"intervals[{k}] must be a finite (c, d) with "
+                                           f"c < d, got {tuple(iv[k, 0].tolist())}")
+            (l, r), = self._ends
+            out._set_cases(iv, self.a, self.b, l, r, self._exps, self._prepared)
+            return out
+        ivs = check_intervals(intervals)
+        if len(ivs) != len(self.blocks):
+            raise PerIntervalArgumentError(f"intervals must hold {len(self.blocks)} intervals "
+                                           f"(as the equation's blocks), got {len(ivs)}")
+        blocks = tuple(Block(iv, b.a, b.b, b.left, b.right, b.exponents, b.kernel)
+                       for iv, b in zip(ivs, self.blocks))
+        out._set(blocks, None, True, self._kernel, self._prepared)
+        return out
+
+    def take(self, indices) -> "Equation":
+        """The cases at ``indices`` (in that order) of an equation with a case axis, their
+        prepared rules kept."""
+        if self.cases is None:
+            raise UnsupportedEquationError("take() selects cases: this equation has no case axis")
+        idx = np.asarray(indices, dtype=int).reshape(-1)
+        out = object.__new__(Equation)
+        (l, r), = self._ends
+        prepared = {n: rules.take(idx) for n, rules in self._prepared.items()}
+        out._set_cases(self.intervals[idx], self.a[idx], self.b[idx], l, r,
+                       tuple(self._exps[i] for i in idx.tolist()), prepared)
+        return out
+
+    @property
+    def exponents(self) -> tuple:
+        """The Exponents of each block (of each case, with a case axis)."""
+        return self._exps
+
+    # -- solving ------------------------------------------------------------------------------
+    def solve(self, f, *, n, total=None, breaks=(), check_residual=True):
+        """psi for the right-hand side ``f`` with ``n`` Jacobi coefficients per interval.
+
+        Parameters
+        ----------
+        f : callable
+            Vectorised right-hand side f(s), s in real coordinates (with a case axis,
+            called once with the nodes of all B equations).
+        n : int or sequence of int
+            Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
+            ``sie.N_MAX``; one shared n with a case axis.
+        total : float or sequence, optional
+            int psi over each interval of index 1 (both ends singular), None for the
+            others; with a case axis, one per case (or shared).
+        breaks : sequence of float, optional
+            Points strictly inside L where f or one of its derivatives jumps (not with a
+            case axis).
+        check_residual : bool
+            Check the equation between the collocation nodes and warn
+            (``ResidualWarning``) where it is not met (several intervals or a kernel,
+            without breaks: elsewhere the collocation is exact by construction).
+
+        Returns
+        -------
+        Solution, or SolutionBatch with a case axis
+
+        Raises
+        ------
+        InvalidOrderError, SideConditionError, InvalidBreakpointError,
+        PerIntervalArgumentError, KernelSingularityError, CallableOutputError
+            As for :func:`sie.solve`.
+        UnsupportedEquationError
+            ``breaks`` with a case axis.
+        """
+        return self._solve(f, n, total, breaks, check_residual, stacklevel=4)
+
+    def _solve(self, f, n, total, breaks, check_residual, stacklevel):
+        """:meth:`solve`, its warnings ``stacklevel`` frames above solve_blocks' caller."""
+        _check_callable("f", f, "vectorised callable f(s)")
+        if self.cases is not None:
+            if np.size(breaks):
+                raise UnsupportedEquationError("a case axis takes no breaks (solve an equation "
+                                               "with breaks on its own)")
+            return self._rules(n).solve(f, self.intervals[:, 0, :], _case_total(total, self))
+        return solve_blocks(self.blocks, f, n, total, breaks, check_residual, self._multi,
+                            stacklevel)
+
+    def functionals(self, f, *, n, breaks=()):
+        """int psi and the solvability residual of the equation, without solving it.
+
+        For one interval without a kernel, exactly as :meth:`solve` (same rule, same n)
+        would return them, at the cost of one Gauss sum: int psi = h mu_0 c_0 with
+        c_0 = f_0/lambda (kappa = 0) or f_1/lambda (kappa = -1), and the residual is f_0
+        (kappa = -1), f_m the projections of f on P_m^{(-alpha,-beta)} (h the half-width).
+        For searches over the interval (free contact ends), where the full solution is only
+        needed at the end.
+
+        Parameters
+        ----------
+        f : callable
+            Vectorised right-hand side f(s), s in real coordinates.
+        n : int
+            Jacobi coefficients (as for :meth:`solve`).
+        breaks : sequence of float, optional
+            Points strictly inside the interval where f or a derivative jumps (not with a
+            case axis).
+
+        Returns
+        -------
+        Functionals, or FunctionalsBatch with a case axis
+            ``integral`` and ``consistency`` are None for kappa = 1 (int psi is then the
+            side condition).
+
+        Raises
+        ------
+        UnsupportedEquationError
+            Several intervals or a kernel; ``breaks`` with a case axis.
+        InvalidOrderError, InvalidBreakpointError, CallableOutputError
+            As for :meth:`solve`.
+
+        References
+        ----------
+        N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10 (solvability for
+        index -1); Zhou, Lee & Jang, Arch. Mech. 66 (2014), eq. (5.40) (the condition that
+        fixes the free ends of a cylindrical punch).
+        """
+        _check_callable("f", f, "vectorised callable f(s)")
+        if self.cases is not None:
+            if np.size(breaks):
+                raise UnsupportedEquationError("a case axis takes no breaks")
+            return self._rules(n).functionals(f, self.intervals[:, 0, :])
+        if len(self.blocks) != 1 or self.blocks[0].kernel is not None:
+            raise UnsupportedEquationError(
+                f"functionals need one interval without a kernel (the dominant equation's "
+                f"Gauss sum); this equation has {len(self.blocks)} interval(s)"
+                f"{' and a kernel' if self.blocks[0].kernel is not None else ''}: use solve()")
+        return block_functionals(self.blocks[0], f, n, breaks)
+
+    def _rules(self, n):
+        """The case axis' projection rules for n coefficients, prepared once per n."""
+        rules = self._prepared.get(n)
+        if rules is None:
+            (l, r), = self._ends
+            rules = CaseRules(self.a, self.b, n, l, r, self._exps)
+            self._prepared[int(n) if isinstance(n, (int, np.integer)) else n] = rules
+        return rules
+
+
+def _as_interval_array(intervals):
+    """``intervals`` as a float array when it has a case axis (3-D: numbers only, not
+    text), else None (one equation: :func:`sie.intervals.check_intervals` checks it)."""
+    try:
+        ndim = np.ndim(intervals)
+    except ValueError:                   # ragged
+        return None
+    if ndim != 3:
+        return None
+    iv = real_array("intervals", intervals, InvalidIntervalError)
+    if iv.shape[-1] != 2:
+        raise InvalidIntervalError(f"intervals with a case axis must have shape (B, 1, 2); "
+                                   f"got {iv.shape}")
+    return iv
+
+
+def _one(v, name):
+    if isinstance(v, str) or v is None:
+        return v
+    raise PerIntervalArgumentError(f"{name} must be one end choice shared by the cases of a "
+                                   f"case axis, got {v!r}")
+
+
+def _case_coefficients(a, b, B):
+    """a and b of a case axis as float arrays of length B (a scalar is shared), each pair
+    checked."""
+    out = []
+    for name, v in (("a", a), ("b", b)):
+        if np.ndim(v) == 0:
+            out.append([v] * B)
+            continue
+        vals = list(np.asarray(v, dtype=object).reshape(-1)) if np.ndim(v) else [v]
+        if len(vals) != B:
+            raise InvalidCoefficientError(
+                f"{name} must be one number for all {B} cases or one per case, got shape "
+                f"{np.shape(v)}")
+        out.append(vals)
+    pairs = [check_coefficients(ai, bi) for ai, bi in zip(*out)]
+    return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+
+
+def _case_total(total, eq):
+    """The totals of a case axis: one finite number per case for index 1 (or one shared),
+    none otherwise."""
+    k, B = eq.kappa[0], eq.cases
+    if k != 1:
+        if total is not None:
+            raise SideConditionError(f"total must not be given: the index is {k} (a total is "
+                                     "only for both ends singular, index 1)")
+        return None
+    if total is None:
+        raise SideConditionError("total (= int psi) is required when both ends are singular "
+                                 "(index 1)")
+    t = real_array("total", total, SideConditionError).reshape(-1)
+    if t.size == 1:
+        t = np.full(B, t[0])
+    if t.size != B or not np.all(np.isfinite(t)):
+        raise SideConditionError(f"total must be one finite number per case ({B}) or one "
+                                 f"for all, got {total!r}")
+    return t
+
+
+def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), intervals=None,
+          check_residual=True):
+    """Solve a psi + (b/pi) PV int_L psi/(t-s) dt + int_L k(s,t) psi(t) dt = f(s) on L.
+
+    The one-call form of ``sie.Equation(a=a, b=b, left=left, right=right,
+    intervals=intervals, kernel=kernel).solve(f, n=n, total=total, breaks=breaks)``
+    (:class:`sie.Equation`: build the equation once where it is solved for many f or n).
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised right-hand side f(s) (s in real coordinates).
+    a, b : float or sequence of float
+        Coefficients, shared or one per interval; b != 0.  cot(pi alpha0) = -a/b fixes the
+        exponents.
+    n : int or sequence of int
+        Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
+        ``N_MAX``.
+    left, right : {"bounded", "singular"} or a sequence of them
+        Behaviour of psi at the left and right end of each interval.
+    kernel : callable or sequence of callables, optional
+        Kernel k(s, t), vectorised over two arrays of equal shape, bounded on L x L (one
+        per interval: the kernel of the equation collocated there).
+    total : float or sequence, optional
+        int psi over each interval with kappa = 1 (both ends singular); None (or absent)
+        for the others.
+    breaks : sequence of float, optional
+        Points strictly inside L where f or one of its derivatives jumps.
+    intervals : sequence of (c, d), optional
+        L as disjoint ascending intervals; default the single interval [-1, 1].  With it,
+        the per-interval attributes of the :class:`Solution` are tuples.  A case axis
+        (shape (B, 1, 2)) returns a :class:`sie.SolutionBatch` (:class:`sie.Equation`).
+    check_residual : bool
+        Check the equation between the collocation nodes and warn (``ResidualWarning``)
+        where it is not met (several intervals or a kernel, without breaks: elsewhere the
+        collocation is exact by construction).  False skips the check and its cost (f at 7
+        more points per interval), for a caller that solves many trial problems and ignores
+        the warning.
+
+    Returns
+    -------
+    Solution
+
+    Raises
+    ------
+    InvalidCoefficientError
+        a or b not finite, or b = 0.
+    InvalidEndConditionError
+        ``left`` or ``right`` not "bounded" or "singular".
+    InvalidOrderError
+        n not an integer, n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``.
+    SideConditionError
+        ``total`` missing where kappa = 1, given elsewhere, or not finite.
+    InvalidBreakpointError
+        A break not strictly inside an interval.
+    InvalidIntervalError
+        ``intervals`` not finite, ascending and disjoint.
+    PerIntervalArgumentError
+        A per-interval argument whose length does not match ``intervals``.
+    KernelSingularityError
+        ``kernel`` unbounded next to an end.
+    CallableOutputError
+        ``f`` or ``kernel`` not callable, not vectorised, complex or not finite.
+
+    Warns
+    -----
+    InconsistentEquationWarning
+        Index -1 on an interval and f violates its solvability condition.
+    ResidualWarning
+        The equation is not satisfied between the nodes (unresolved f or kernel).
+
+    Notes
+    -----
+    Per interval, psi = w phi with w = (1-u)^alpha (1+u)^beta, the exponents from
+    cot(pi alpha0) = -a/b and the end choices (:func:`sie_exponents`), and phi a Jacobi
+    series P_k^{(alpha,beta)}; the equation is collocated at the roots of
+    P_{n-kappa}^{(-alpha,-beta)}, where the dominant operator maps the basis exactly
+    (Erdogan, Gupta & Cook 1973; Krenk 1975).  Spectral convergence for analytic f and k.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+    equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+    Noordhoff (1973), ch. 7.
+    S. Krenk, "On quadrature formulas for singular integral equations of the first and the
+    second kind", Quart. Appl. Math. 33 (1975) 225.
+    N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953), ch. 10 (index,
+    side conditions and solvability).
+
+    Examples
+    --------
+    (1/pi) PV int sqrt(1 - t^2) / (t - s) dt = -s on (-1, 1), so with a = 0, b = 1,
+    f(s) = -s and both ends bounded (index -1) the solution is psi(s) = sqrt(1 - s^2):
+
+    >>> import numpy as np, sie
+    >>> sol = sie.solve(lambda s: -s, a=0.0, b=1.0, n=4, left="bounded", right="bounded")
+    >>> sol.alpha, sol.beta, sol.kappa
+    (0.5, 0.5, -1)
+    >>> [round(float(v), 12) for v in sol(np.array([0.0, 0.6]))]      # sqrt(1 - s^2)
+    [1.0, 0.8]
+    >>> round(sol.integral() / (np.pi / 2), 12)                        # int psi = pi/2
+    1.0
+    """
+    eq = Equation(a=a, b=b, left=left, right=right, intervals=intervals, kernel=kernel)
+    return eq._solve(f, n, total, breaks, check_residual, stacklevel=4)   # at our caller
