@@ -176,29 +176,72 @@ def first_touch(face, eq: ZoneEquations, width=1e-3):
     return list(seed.zones), seed.load
 
 
-def _touch(face, eq, width=1e-3):
-    """The first-touch zones as a (not yet solved) ZoneState with anchors and growth
-    exponents.  A zone at an interior minimum is shifted so that its solvability condition
-    holds for a linear slope (centre x0 + h (beta - alpha), h its half-width)."""
+def touch_zones(face, alpha, beta, width=1e-3):
+    """The first-touch zone at each lowest point of the face, for cases whose exponents
+    with both ends bounded are ``alpha``, ``beta`` (arrays, one entry per case): a list
+    with one (c, d, kinds, anchors) per lowest point, c and d arrays over the cases.
+
+    A zone ~``width`` times the face's scale wide: at an edge, a corner there and a free
+    end; on a flat stretch, the stretch widened at its free ends; at an interior minimum
+    x0, two free ends, the centre shifted to x0 + h (beta - alpha) (h the half-width), where
+    the solvability condition holds for a linear slope."""
     lo, hi = face.extent
+    w = width * face.scale
+    ones = np.ones(np.shape(alpha))
+    out = []
+    for point in face.lowest_points():
+        x0, kind = point
+        kinds = touch_kinds(face, point)
+        if kind == "left-edge":
+            c, d, anc = lo, lo + w, (lo, lo)
+        elif kind == "right-edge":
+            c, d, anc = hi - w, hi, (hi, hi)
+        elif kind == "flat":
+            cf, df = (float(v) for v in x0)
+            c, d, anc = (cf if cf == lo else cf - 0.5 * w), (df if df == hi else df + 0.5 * w), \
+                (cf, df)
+        else:
+            x0 = float(x0)
+            m = x0 + 0.5 * w * (np.asarray(beta) - np.asarray(alpha))
+            c, d, anc = np.maximum(lo, m - 0.5 * w), np.minimum(hi, m + 0.5 * w), (x0, x0)
+        out.append((c * ones, d * ones, kinds, anc))
+    return out
+
+
+def touch_kinds(face, point):
+    """The kinds of the ends of the first-touch zone at a lowest point (x0, kind) of
+    :meth:`contact.face.Face.lowest_points`: a corner at an edge of the face, free
+    elsewhere."""
+    lo, hi = face.extent
+    x0, kind = point
+    if kind == "left-edge":
+        return CORNER, FREE
+    if kind == "right-edge":
+        return FREE, CORNER
+    if kind == "flat":
+        return CORNER if x0[0] == lo else FREE, CORNER if x0[1] == hi else FREE
+    return FREE, FREE
+
+
+def power_law_ends(c, d, kinds, anchors, g):
+    """The ends of a zone grown from its anchors by the factor ``g`` (arrays over cases, or
+    numbers): each free end moved away from its anchor g-fold, corners kept (the power law
+    of a face homogeneous about the anchors, Ciavarella et al. 1998 at a flat's ends)."""
+    if kinds[0] == FREE and anchors[0] is not None:
+        c = anchors[0] + g * (c - anchors[0])
+    if kinds[1] == FREE and anchors[1] is not None:
+        d = anchors[1] + g * (d - anchors[1])
+    return c, d
+
+
+def _touch(face, eq, width=1e-3):
+    """The first-touch zones (:func:`touch_zones`) as a (not yet solved) ZoneState with
+    anchors and growth exponents."""
     w = width * face.scale
     e = sie.sie_exponents(eq.a, eq.b, "bounded", "bounded")
     zones, anchors = [], []
-    for x0, kind in face.lowest_points():
-        if kind == "left-edge":
-            z, anc = Zone(lo, lo + w, CORNER, FREE), (lo, lo)
-        elif kind == "right-edge":
-            z, anc = Zone(hi - w, hi, FREE, CORNER), (hi, hi)
-        elif kind == "flat":
-            c, d = (float(v) for v in x0)
-            z = Zone(c if c == lo else c - 0.5 * w, d if d == hi else d + 0.5 * w,
-                     CORNER if c == lo else FREE, CORNER if d == hi else FREE)
-            anc = (c, d)
-        else:
-            x0 = float(x0)
-            m = x0 + 0.5 * w * (e.beta - e.alpha)
-            z, anc = Zone(max(lo, m - 0.5 * w), min(hi, m + 0.5 * w)), (x0, x0)
-        zones.append(z)
+    for c, d, kinds, anc in touch_zones(face, np.array([e.alpha]), np.array([e.beta]), width):
+        zones.append(Zone(float(c[0]), float(d[0]), *kinds))
         anchors.append(anc)
     growth = tuple(_growth_exponent(face, z, anc, w) for z, anc in zip(zones, anchors))
     loads = eq.zone_loads(zones)
@@ -401,10 +444,7 @@ def _predict(state, P, face=None, eq=None):
                 t = _extrapolate([h[2][j] for h in history], loads, 0.0, P, origin)
         else:
             g = 1.0 if growth[j] is None else r ** (1.0 / growth[j])
-            if z.left == FREE and a_l is not None:
-                c = a_l + g * (z.c - a_l)
-            if z.right == FREE and a_r is not None:
-                d = a_r + g * (z.d - a_r)
+            c, d = power_law_ends(z.c, z.d, (z.left, z.right), (a_l, a_r), g)
             if face is not None and state.solution is None and a_l == a_r is not None \
                     and z.left == z.right == FREE and growth[j] is not None and \
                     (face.homogeneous is None or face.homogeneous[0] != a_l):
@@ -588,8 +628,8 @@ def _inspect(face, eq, state, gap=True):
     for z, piece in zip(state.zones, sol.pieces):
         X = z.points(_CHECK_U)
         p = _check_weight(piece.alpha, piece.beta) * piece.phi_local(_CHECK_U)
-        top = max(float(np.max(np.abs(p))), np.finfo(float).tiny)
-        if min(float(np.min(p)), _lowest_dip(piece, p, top)) < -tol * top:
+        top = pressure_top(p)
+        if not pressure_holds(p, tol) or _lowest_dip(piece, p, top) < -tol * top:
             ok = False
         k = int(np.argmin(np.where(_INNER, p, np.inf)))
         p_inner.append(float(p[k]) / top)
@@ -626,17 +666,37 @@ def _inspect(face, eq, state, gap=True):
     return _Checks(ok, tuple(p_inner), tuple(p_where), valley, valley_where)
 
 
+def pressure_top(p):
+    """The largest |p| of each zone's pressure at the check points (the last axis), and
+    not zero."""
+    return np.maximum(np.max(np.abs(p), axis=-1), np.finfo(float).tiny)
+
+
+def pressure_holds(p, tol):
+    """Whether p >= 0 at the check points (the last axis) to ``tol`` of its largest |p|:
+    a zone's pressure at the check points (:data:`_CHECK_U`), or many zones' as rows."""
+    return np.min(p, axis=-1) >= -tol * pressure_top(p)
+
+
+def pressure_dips(p):
+    """The interior local minima of p at the check points below 1e-2 of its largest |p|
+    (a boolean array over the points 1 .. m - 2 of the last axis): where the pressure may
+    turn negative between the check points (:func:`_lowest_dip` polishes them)."""
+    top = pressure_top(p)[..., None]
+    mid = p[..., 1:-1]
+    return (mid <= p[..., :-2]) & (mid <= p[..., 2:]) & (mid < 1e-2 * top)
+
+
 def _lowest_dip(piece, p, top):
-    """The lowest pressure in the dips of one zone's pressure ``p`` at the check points:
-    each interior local minimum among them below 1e-2 of ``top`` polished by parabolas
-    through three points, the spacing cut by 8 each time (a pressure that turns negative
-    between the check points, as one zone just below the load where two merge, is found);
-    inf where there is no such dip."""
+    """The lowest pressure in the dips of one zone's pressure ``p`` at the check points
+    (:func:`pressure_dips`), each polished by parabolas through three points, the spacing
+    cut by 8 each time (a pressure that turns negative between the check points, as one
+    zone just below the load where two merge, is found); inf where there is no such dip."""
     def pressure(u):                # p at local points u of the zone
         return (1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta * piece.phi_local(u)
 
     out = math.inf
-    dips = np.flatnonzero((p[1:-1] <= p[:-2]) & (p[1:-1] <= p[2:]) & (p[1:-1] < 1e-2 * top)) + 1
+    dips = np.flatnonzero(pressure_dips(p)) + 1
     for k in dips.tolist():
         u0 = float(_CHECK_U[k])
         h = 0.5 * min(_CHECK_U[k - 1] - u0, u0 - _CHECK_U[k + 1])

@@ -4,7 +4,9 @@ Cases that share a punch face and differ in the coefficients of the equation (fr
 speed: a = N12 mu_f, b = N11) and in the load go through the first step of
 :func:`contact.continuation.follow_load` together -- first touch, the power-law prediction to
 the load, the side conditions there, the solution and its checks -- each stage one vectorised
-call (an :class:`sie.Equation` with a case axis) instead of one per case.  It is the continuation's own step,
+call (an :class:`sie.Equation` with a case axis) instead of one per case.  It is the
+continuation's own step, made of the continuation's own pieces with a case axis (the
+first-touch zone, the power law, the side conditions and their scale, the pressure check),
 in the cases where that step is the whole answer:
 
 * the face is convex and lowest at one point, edge or flat stretch (one zone, whose gap opens
@@ -13,7 +15,7 @@ in the cases where that step is the whole answer:
 * n is fixed (given, or a polynomial slope, whose projection is exact): no refinement;
 * at the predicted ends the side conditions already hold to rounding (32 eps, Newton's own
   test: no Newton step), the zone stays on the face and holds no break, and p >= 0 at the check
-  points (to the resolution of the solution).
+  points (to the resolution of the solution) with no dip between them to polish.
 
 A case that fails any of these is left to the full continuation, solved alone (events,
 Newton, refinement); :func:`contact.solve` and :func:`contact.solve_batch` go this way for
@@ -27,14 +29,14 @@ import numpy as np
 
 import sie
 
-from .continuation import _CHECK_U, _growth_exponent, series_tail
-from .zones import _NINE, CORNER, FREE, Zone, _SIE_END
+from .continuation import (_CHECK_U, _growth_exponent, power_law_ends, pressure_dips,
+                           pressure_holds, series_tail, touch_kinds, touch_zones)
+from .zones import _SIE_END, Zone, one_zone_conditions, slope_scale
 
 __all__ = ["FirstSteps", "first_steps"]
 
-_TOUCH_WIDTH = 1e-3        # the first-touch zone, relative to the face scale (as _touch)
+_TOUCH_WIDTH = 1e-3        # the first-touch zone, relative to the face scale (as _touch's)
 _CONVERGED = 32 * np.finfo(float).eps     # Newton's test of solve_ends: no step needed
-_CHECK_WEIGHT_U = np.ascontiguousarray(_CHECK_U)
 
 
 @dataclass(frozen=True, eq=False)
@@ -58,21 +60,29 @@ class FirstSteps:
 
 def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
     """The first continuation step of each case (a_i, b_i, P_i) on one face, at n fixed;
-    None where the face is not one the step can finish (module docstring)."""
+    None where the face is not one the step can finish (module docstring).  The step's
+    pieces are the continuation's own, on a case axis: the first-touch zone
+    (:func:`contact.continuation.touch_zones`), its growth by the power law
+    (:func:`contact.continuation.power_law_ends`), the side conditions and their scale
+    (:func:`contact.zones.one_zone_conditions`, :func:`contact.zones.slope_scale`) and the
+    pressure check (:func:`contact.continuation.pressure_holds`)."""
     if not face.convex:
         return None
     lowest = face.lowest_points()
     if len(lowest) != 1:
         return None
+    x0, kind = lowest[0]
+    if kind == "interior" and (face.homogeneous is None or face.homogeneous[0] != float(x0)):
+        return None     # the prediction places that zone by a search (continuation._predict)
     a, b, P = (np.asarray(v, dtype=float) for v in (a, b, loads))
-    kinds = _touch_kinds(face, lowest[0])
-    if kinds is None:
-        return None
+    kinds = touch_kinds(face, lowest[0])
     unit = np.ones(a.size)
     eqs = sie.Equation(a=a, b=b, left=_SIE_END[kinds[0]], right=_SIE_END[kinds[1]],
                        intervals=_cases(-unit, unit))
-    c, d, anchors = _seed(face, lowest[0], np.array([e.alpha for e in eqs.exponents]),
-                          np.array([e.beta for e in eqs.exponents]))
+    # the exponents with both ends bounded (those of a zone at an interior minimum, the only
+    # one whose placement uses them)
+    (c, d, _, anchors), = touch_zones(face, np.array([e.alpha for e in eqs.exponents]),
+                                      np.array([e.beta for e in eqs.exponents]), _TOUCH_WIDTH)
     eqs = eqs.on(_cases(c, d))
     z0 = Zone(float(c[0]), float(d[0]), *kinds)
     kappa = z0.kappa
@@ -83,10 +93,7 @@ def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
         ok &= L > 0.0
         growth = _growth_exponent(face, z0, anchors, _TOUCH_WIDTH * face.scale)
         g = (P / np.where(ok, L, 1.0)) ** (1.0 / growth) if growth is not None else 1.0
-        if kinds[0] == FREE:
-            c = anchors[0] + g * (c - anchors[0])
-        if kinds[1] == FREE:
-            d = anchors[1] + g * (d - anchors[1])
+        c, d = power_law_ends(c, d, kinds, anchors, g)
     lo, hi = face.extent
     ok &= (lo <= c) & (c < d) & (d <= hi)
     for x in breaks:
@@ -112,73 +119,31 @@ def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
     return FirstSteps(done[keep], kinds, sols if keep.size == done.size else sols.take(keep))
 
 
-def _touch_kinds(face, lowest):
-    """The kinds of the ends of the first-touch zone (as
-    :func:`contact.continuation._touch`), or None for a lowest point the step cannot start
-    from: an interior minimum the face is not homogeneous about, where the prediction
-    places the zone by a search."""
-    lo, hi = face.extent
-    x0, kind = lowest
-    if kind == "left-edge":
-        return CORNER, FREE
-    if kind == "right-edge":
-        return FREE, CORNER
-    if kind == "flat":
-        return CORNER if x0[0] == lo else FREE, CORNER if x0[1] == hi else FREE
-    if face.homogeneous is None or face.homogeneous[0] != float(x0):
-        return None
-    return FREE, FREE
-
-
 def _cases(c, d):
     """The zones (c_i, d_i) as the intervals of an sie.Equation's case axis."""
     return np.column_stack([c, d])[:, None, :]
 
 
-def _seed(face, lowest, alpha, beta):
-    """(c, d, anchors) of the first-touch zone of every case, whose exponents with both
-    ends bounded are ``alpha``, ``beta`` (as :func:`contact.continuation._touch`)."""
-    lo, hi = face.extent
-    w = _TOUCH_WIDTH * face.scale
-    x0, kind = lowest
-    B = alpha.size
-    if kind == "left-edge":
-        return np.full(B, lo), np.full(B, lo + w), (lo, lo)
-    if kind == "right-edge":
-        return np.full(B, hi - w), np.full(B, hi), (hi, hi)
-    if kind == "flat":
-        cf, df = (float(v) for v in x0)
-        return (np.full(B, cf if cf == lo else cf - 0.5 * w),
-                np.full(B, df if df == hi else df + 0.5 * w), (cf, df))
-    # an interior minimum: the centre shifted so that the solvability condition holds for a
-    # linear slope (both ends free: the bounded-bounded exponents)
-    x0 = float(x0)
-    m = x0 + 0.5 * w * (beta - alpha)
-    return np.maximum(lo, m - 0.5 * w), np.minimum(hi, m + 0.5 * w), (x0, x0)
-
-
 def _side_conditions(eqs, slope, P, n):
-    """max |F| of each case: the scaled side conditions of one zone with a free end
-    (:meth:`contact.zones.ZoneEquations.residual`): the solvability residual over the
-    slope's scale (index -1) and int p / P - 1."""
+    """max |F| of each case: the scaled side conditions of its one zone with a free end
+    (:meth:`contact.zones.ZoneEquations.residual`, Newton's measure of convergence)."""
     fb = eqs.functionals(slope, n=n)
-    F = np.abs(fb.integral / P - 1.0)
+    R = one_zone_conditions(fb.integral, fb.consistency, P)
+    if fb.consistency is None:
+        return np.abs(R[0])
     iv = eqs.intervals[:, 0, :]
-    if fb.kappa == -1:
-        width = iv[:, 1] - iv[:, 0]
-        X = iv[:, :1] + width[:, None] * _NINE
-        scale = np.max(np.abs(slope(X.ravel()).reshape(X.shape)), axis=1)
-        scale = np.where(scale > 0.0, scale, np.abs(eqs.b) * P / width)
-        F = np.maximum(F, np.abs(fb.consistency) / scale)
-    return F
+    scale = slope_scale(slope, iv[:, :1], iv[:, 1:], eqs.b, P)
+    return np.maximum(np.abs(R[0]) / scale, np.abs(R[1]))
 
 
 def _pressure_ok(sols):
-    """Which solutions pass p >= 0 at the check points of their zone, to the resolution of
-    their series (:func:`contact.continuation._inspect` on one zone)."""
+    """Which solutions pass the continuation's check of p >= 0 at the check points of
+    their zone, to the resolution of their series (:func:`contact.continuation._inspect`
+    on one zone), and have no dip there that could hide a negative pressure between the
+    check points (the continuation polishes those; such a case is left to it)."""
     tol = np.maximum(1e-9, series_tail(sols.coefficients))
-    u = _CHECK_WEIGHT_U
-    p = sols.weight_local(u) * sols.phi_local(u)
-    top = np.maximum(np.max(np.abs(p), axis=1), np.finfo(float).tiny)
-    return np.flatnonzero(np.min(p, axis=1) >= -tol * top)
+    p = sols.weight_local(_CHECK_U) * sols.phi_local(_CHECK_U)
+    good = pressure_holds(p, tol) & ~np.any(pressure_dips(p), axis=-1)
+    return np.flatnonzero(good)
+
 

@@ -37,7 +37,7 @@ import sie
 
 from .errors import ContactLossError
 
-__all__ = ["Zone", "ZoneEquations", "FREE", "CORNER"]
+__all__ = ["Zone", "ZoneEquations", "FREE", "CORNER", "slope_scale", "one_zone_conditions"]
 
 FREE, CORNER = "free", "corner"
 _FLOOR = 1e-9       # residuals below this that no step reduces are rounding: converged
@@ -46,6 +46,24 @@ _STEP_TOL = 1e-13    # see solve_ends: the error left (relative to the width) to
 _F_TOL = 5e-14       # ... and the residuals
 _SIE_END = {FREE: "bounded", CORNER: "singular"}
 _NINE = np.linspace(0.0, 1.0, 9)     # where the slope scale of a zone is sampled
+
+
+def slope_scale(slope, c, d, b, load):
+    """The size of H' on the zones [c_j, d_j] of each case: its largest magnitude at 9
+    points of each zone; where H' vanishes there, |b| P over the widest zone.  ``c``, ``d``:
+    arrays of shape (cases, zones); the result has one entry per case."""
+    c, d = np.asarray(c, dtype=float), np.asarray(d, dtype=float)
+    X = c[..., None] + (d - c)[..., None] * _NINE
+    s = np.max(np.abs(slope(X.ravel()).reshape(X.shape)), axis=(-2, -1))
+    return np.where(s > 0.0, s, np.abs(b) * load / np.max(d - c, axis=-1))
+
+
+def one_zone_conditions(carried, consistency, load):
+    """The raw side conditions of one zone with a free end (:meth:`ZoneEquations.residual`)
+    from its functionals (arrays over cases, or numbers): the solvability residual (index
+    -1; ``consistency`` None otherwise) and int p / P - 1, ``carried`` being int p."""
+    load_condition = carried / load - 1.0
+    return (load_condition,) if consistency is None else (consistency, load_condition)
 
 
 @dataclass(frozen=True)
@@ -169,7 +187,6 @@ class ZoneEquations:
         h, m = 0.5 * z.width, 0.5 * (z.c + z.d)
         br = [(x - m) / h for x in self.breaks if z.c < x < z.d]
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
-        left, right = _SIE_END[z.left], _SIE_END[z.right]
         f = lambda u: self.slope(m + h * u)      # noqa: E731
         # on [-1, 1]: the equation and its rule are prepared once, the zone maps onto it
         return _equation(self.a, self.b, ((z.left, z.right),)).functionals(f, n=self.n,
@@ -177,9 +194,8 @@ class ZoneEquations:
 
     def _raw_one_zone(self, z):
         fun = self._functionals(z)
-        R = [fun.consistency] if z.kappa == -1 else []
-        R.append(0.5 * z.width * fun.integral / self.load - 1.0)
-        return np.array(R)
+        return np.array(one_zone_conditions(0.5 * z.width * fun.integral, fun.consistency,
+                                            self.load))
 
     def zone_loads(self, zones):
         """The load each zone would carry on its own (no interaction between zones; exact
@@ -188,10 +204,9 @@ class ZoneEquations:
                 for z in zones]
 
     def _slope_scale(self, zones):
-        """The size of H' on the zones: its largest magnitude at 9 points of each."""
-        X = np.concatenate([z.c + z.width * _NINE for z in zones])
-        s = float(np.max(np.abs(self.slope(X))))
-        return s if s > 0.0 else abs(self.b) * self.load / max(z.width for z in zones)
+        """The size of H' on the zones (:func:`slope_scale`)."""
+        return float(slope_scale(self.slope, [[z.c for z in zones]], [[z.d for z in zones]],
+                                 self.b, self.load)[0])
 
     # -- Newton ---------------------------------------------------------------------------------
     def newton(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf):

@@ -108,7 +108,7 @@ class Equation:
     Parameters
     ----------
     a, b : float or sequence of float
-        The coefficients, shared by all intervals or one per interval (b != 0 and |b/a|
+        The coefficients, shared by all intervals or one per interval (b != 0 and abs(b/a)
         resolvable in double precision: see :func:`sie.sie_exponents`); with a case axis,
         one per case (shape (B,)) or shared.
     left, right : {"bounded", "singular"} or a sequence of them
@@ -138,7 +138,7 @@ class Equation:
     Raises
     ------
     InvalidCoefficientError
-        a or b not finite, b = 0, or |b/a| not resolvable; shapes that do not match.
+        a or b not finite, b = 0, or abs(b/a) not resolvable; shapes that do not match.
     InvalidEndConditionError
         ``left`` or ``right`` not "bounded" or "singular".
     InvalidIntervalError
