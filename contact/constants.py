@@ -374,6 +374,11 @@ def surface_constants(material, c) -> SurfaceConstants:
     """
     c, c_R = check_subrayleigh(material, c)
     sc = call(material, "surface_constants", c)
+    if type(sc) is SurfaceConstants and sc.c == c and sc.rayleigh_speed == c_R and \
+            _finite_floats(sc.N11, sc.N12, sc.N21, sc.N22) and sc.N11 < 0.0 and \
+            _finite_floats(*(v for v in (sc.eta_product, sc.eta_sum,
+                                         sc.rayleigh_denominator) if v is not None)):
+        return sc           # what the checks below accept, at a fraction of their cost
     where = describe_call(material, "surface_constants", c)
     if not isinstance(sc, SurfaceConstants):
         raise MaterialError(f"{where} must return a contact.SurfaceConstants, got "
@@ -395,8 +400,16 @@ def surface_constants(material, c) -> SurfaceConstants:
     return sc
 
 
+def _finite_floats(*values) -> bool:
+    """Whether every value is a finite float (Python's or numpy's; the common case that
+    the detailed checks of a material's results then need not look at)."""
+    return all(isinstance(v, float) and math.isfinite(v) for v in values)
+
+
 def _positive(value, material, method: str) -> float:
     """A speed returned by ``material.<method>()`` as a float, or MaterialError."""
+    if _finite_floats(value) and value > 0.0:
+        return float(value)
     where = describe_call(material, method)
     v = check_finite(f"{where} (a relative speed)", value, MaterialError)
     if not v > 0.0:

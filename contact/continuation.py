@@ -629,7 +629,7 @@ def _inspect(face, eq, state, gap=True):
         X = z.points(_CHECK_U)
         p = _check_weight(piece.alpha, piece.beta) * piece.phi_local(_CHECK_U)
         top = pressure_top(p)
-        if not pressure_holds(p, tol) or _lowest_dip(piece, p, top) < -tol * top:
+        if not pressure_holds(p, tol, top) or _lowest_dip(piece, p, top) < -tol * top:
             ok = False
         k = int(np.argmin(np.where(_INNER, p, np.inf)))
         p_inner.append(float(p[k]) / top)
@@ -672,17 +672,19 @@ def pressure_top(p):
     return np.maximum(np.max(np.abs(p), axis=-1), np.finfo(float).tiny)
 
 
-def pressure_holds(p, tol):
-    """Whether p >= 0 at the check points (the last axis) to ``tol`` of its largest |p|:
-    a zone's pressure at the check points (:data:`_CHECK_U`), or many zones' as rows."""
-    return np.min(p, axis=-1) >= -tol * pressure_top(p)
+def pressure_holds(p, tol, top=None):
+    """Whether p >= 0 at the check points (the last axis) to ``tol`` of its largest |p|
+    (``top``, :func:`pressure_top`, when known): a zone's pressure at the check points
+    (:data:`_CHECK_U`), or many zones' as rows."""
+    return np.min(p, axis=-1) >= -tol * (pressure_top(p) if top is None else top)
 
 
-def pressure_dips(p):
+def pressure_dips(p, top=None):
     """The interior local minima of p at the check points below 1e-2 of its largest |p|
-    (a boolean array over the points 1 .. m - 2 of the last axis): where the pressure may
-    turn negative between the check points (:func:`_lowest_dip` polishes them)."""
-    top = pressure_top(p)[..., None]
+    (``top``, :func:`pressure_top`, when known; a boolean array over the points 1 .. m - 2
+    of the last axis): where the pressure may turn negative between the check points
+    (:func:`_lowest_dip` polishes them)."""
+    top = np.asarray(pressure_top(p) if top is None else top)[..., None]
     mid = p[..., 1:-1]
     return (mid <= p[..., :-2]) & (mid <= p[..., 2:]) & (mid < 1e-2 * top)
 
@@ -696,7 +698,7 @@ def _lowest_dip(piece, p, top):
         return (1.0 - u) ** piece.alpha * (1.0 + u) ** piece.beta * piece.phi_local(u)
 
     out = math.inf
-    dips = np.flatnonzero(pressure_dips(p)) + 1
+    dips = np.flatnonzero(pressure_dips(p, top)) + 1
     for k in dips.tolist():
         u0 = float(_CHECK_U[k])
         h = 0.5 * min(_CHECK_U[k - 1] - u0, u0 - _CHECK_U[k + 1])

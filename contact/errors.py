@@ -5,6 +5,8 @@ value received and what is allowed.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from sie.errors import check_finite_real, describe_value, is_number, real_array
@@ -285,6 +287,8 @@ def check_finite(name: str, value, error=ContactInputError) -> float:
     """Return ``value`` as a float, or raise ``error`` naming ``name`` if it is not a finite real
     number (:func:`check_number`, then :func:`sie.errors.check_finite_real`; the contact
     layer's base error by default)."""
+    if type(value) is float and math.isfinite(value):
+        return value                  # the common case, which the checks below accept
     check_number(name, value, error)
     return check_finite_real(name, value, error)
 

@@ -30,7 +30,7 @@ import numpy as np
 import sie
 
 from .continuation import (_CHECK_U, _growth_exponent, power_law_ends, pressure_dips,
-                           pressure_holds, series_tail, touch_kinds, touch_zones)
+                           pressure_holds, pressure_top, series_tail, touch_kinds, touch_zones)
 from .zones import _SIE_END, Zone, one_zone_conditions, slope_scale
 
 __all__ = ["FirstSteps", "first_steps"]
@@ -143,7 +143,8 @@ def _pressure_ok(sols):
     check points (the continuation polishes those; such a case is left to it)."""
     tol = np.maximum(1e-9, series_tail(sols.coefficients))
     p = sols.weight_local(_CHECK_U) * sols.phi_local(_CHECK_U)
-    good = pressure_holds(p, tol) & ~np.any(pressure_dips(p), axis=-1)
+    top = pressure_top(p)
+    good = pressure_holds(p, tol, top) & ~np.any(pressure_dips(p, top), axis=-1)
     return np.flatnonzero(good)
 
 

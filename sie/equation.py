@@ -186,7 +186,7 @@ class Equation:
     (2, [0.5, 2.0])
     """
 
-    __slots__ = ("blocks", "cases", "intervals", "a", "b", "kappa", "_multi", "_ends",
+    __slots__ = ("_blocks", "cases", "intervals", "a", "b", "kappa", "_multi", "_ends",
                  "_exps", "_prepared", "_kernel")
 
     def __init__(self, *, a, b, left, right, intervals=None, kernel=None):
@@ -207,7 +207,7 @@ class Equation:
 
     def _set(self, blocks, cases, multi, kernel, prepared=None):
         s = object.__setattr__
-        s(self, "blocks", blocks)
+        s(self, "_blocks", blocks)
         s(self, "cases", cases)
         s(self, "_multi", multi)
         s(self, "_kernel", kernel)
@@ -238,26 +238,36 @@ class Equation:
         A, Bv = _case_coefficients(a, b, B)
         left, right = check_end("left", _one(left, "left")), check_end("right", _one(right, "right"))
         exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(A.tolist(), Bv.tolist()))
+        A.flags.writeable = Bv.flags.writeable = False
         self._set_cases(iv, A, Bv, left, right, exps, None)
 
     def _set_cases(self, iv, A, Bv, left, right, exps, prepared):
+        """A case axis: ``iv`` copied, A and Bv (read-only arrays) and the rest shared."""
         s = object.__setattr__
         iv = np.array(iv, dtype=float)
-        blk = Block(Interval(float(iv[0, 0, 0]), float(iv[0, 0, 1])), float(A[0]),
-                    float(Bv[0]), left, right, exps[0])
-        s(self, "blocks", (blk,))
+        iv.flags.writeable = False
+        s(self, "_blocks", None)               # built when asked for (:attr:`blocks`)
         s(self, "cases", int(iv.shape[0]))
         s(self, "_multi", True)
         s(self, "_kernel", None)
         s(self, "intervals", iv)
-        s(self, "a", np.array(A, dtype=float))
-        s(self, "b", np.array(Bv, dtype=float))
+        s(self, "a", A)
+        s(self, "b", Bv)
         s(self, "kappa", (exps[0].kappa,))
         s(self, "_ends", ((left, right),))
         s(self, "_exps", exps)
         s(self, "_prepared", {} if prepared is None else prepared)
-        for name in ("intervals", "a", "b"):
-            getattr(self, name).flags.writeable = False
+
+    @property
+    def blocks(self) -> tuple:
+        """The blocks, left to right (with a case axis: the one block of case 0)."""
+        if self._blocks is None:
+            (l, r), = self._ends
+            iv = self.intervals[0, 0]
+            object.__setattr__(self, "_blocks", (Block(
+                Interval(float(iv[0]), float(iv[1])), float(self.a[0]), float(self.b[0]), l, r,
+                self._exps[0]),))
+        return self._blocks
 
     def __setattr__(self, name, value):
         raise AttributeError(f"sie.Equation is immutable (tried to set {name!r})")
@@ -278,7 +288,8 @@ class Equation:
         intervals are checked.  For searches over the ends of the intervals."""
         out = object.__new__(Equation)
         if self.cases is not None:
-            iv = _as_interval_array(intervals)
+            iv = intervals if isinstance(intervals, np.ndarray) and intervals.dtype == float \
+                else _as_interval_array(intervals)
             if iv is None or iv.shape != (self.cases, 1, 2):
                 raise InvalidIntervalError(f"intervals must have the case axis' shape "
                                            f"({self.cases}, 1, 2); got {np.shape(intervals)}")
@@ -308,7 +319,9 @@ class Equation:
         out = object.__new__(Equation)
         (l, r), = self._ends
         prepared = {n: rules.take(idx) for n, rules in self._prepared.items()}
-        out._set_cases(self.intervals[idx], self.a[idx], self.b[idx], l, r,
+        A, Bv = self.a[idx], self.b[idx]
+        A.flags.writeable = Bv.flags.writeable = False
+        out._set_cases(self.intervals[idx], A, Bv, l, r,
                        tuple(self._exps[i] for i in idx.tolist()), prepared)
         return out
 
@@ -451,7 +464,15 @@ def _one(v, name):
 
 def _case_coefficients(a, b, B):
     """a and b of a case axis as float arrays of length B (a scalar is shared), each pair
-    checked."""
+    checked (:func:`sie.exponents.check_coefficients`; numbers of a float array with
+    |a/b| < 1e12, far from what double precision cannot resolve, at once)."""
+    if all(isinstance(v, float) or (isinstance(v, np.ndarray) and v.dtype == float
+                                    and v.shape in ((B,), ())) for v in (a, b)):
+        A, Bv = (np.full(B, v) if np.ndim(v) == 0 else np.array(v, dtype=float)
+                 for v in (a, b))
+        # comparisons only: no floating-point warning for inf or NaN, which fail them
+        if np.all((np.abs(A) < 1e12 * np.abs(Bv)) & (np.abs(Bv) < np.inf) & (Bv != 0.0)):
+            return A, Bv
     out = []
     for name, v in (("a", a), ("b", b)):
         if np.ndim(v) == 0:

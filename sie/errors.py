@@ -321,6 +321,8 @@ class ResidualWarning(SIEWarning):
 def check_finite_real(name: str, value, error=SIEInputError) -> float:
     """Return ``value`` as a float or raise ``error`` naming ``name``: a real number
     (:func:`is_number`: not text, which ``float`` would parse, nor a bool), finite."""
+    if type(value) is float and math.isfinite(value):
+        return value                  # the common case, which the checks below accept
     if not is_number(value):
         raise error(f"{name} must be a finite real number, got {describe_value(value)}")
     try:
