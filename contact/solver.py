@@ -170,13 +170,10 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
-    const = _surface_constants(material, speed, constants)
-    mu_f = _signed_friction(const, friction, direction)
+    problem = _problem(material, punch, speed, friction, direction, constants)
     if method == "closed_form":
-        return _closed_form_result(const, punch, load, float(speed), friction, direction, mu_f,
-                                   material)
-    return _numeric_cases(material, punch, [_Case(const, load, float(speed), friction,
-                                                  direction, mu_f)], n, tol)[0]
+        return _closed_form_result(problem, load)
+    return _numeric_cases(punch, [_Case(problem, load)], n, tol)[0]
 
 
 def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
@@ -269,21 +266,21 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 const = shared.get(key)
                 if const is None:
                     const = shared[key] = surface_constants(material, Vi)
-            mu_f = _signed_friction(const, Mi, Di)
+            problem = _Problem(material, punch, const, float(Vi), Mi, Di,
+                               _signed_friction(const, Mi, Di))
             if method == "closed_form":
-                out[i] = _closed_form_result(const, punch, Pi, float(Vi), Mi, Di, mu_f,
-                                             material)
+                out[i] = _closed_form_result(problem, Pi)
                 continue
         except ContactInputError as exc:
             if errors == "raise":
                 raise
             out[i] = exc
             continue
-        cases.append((i, _Case(const, Pi, float(Vi), Mi, Di, mu_f)))
+        cases.append((i, _Case(problem, Pi)))
     if cases:
         with _collections_deferred():
-            solved = _numeric_cases(material, punch, [c for _, c in cases], n, tol,
-                                    errors=errors, residual=residual)
+            solved = _numeric_cases(punch, [c for _, c in cases], n, tol, errors=errors,
+                                    residual=residual)
         for (i, _), r in zip(cases, solved):
             out[i] = r
     return out
@@ -343,10 +340,14 @@ def _signed_friction(const, friction, direction) -> float:
 
 
 @dataclass(frozen=True)
-class _Case:
-    """One case of :func:`_numeric_cases`: its surface constants and inputs (checked)."""
+class _Problem:
+    """A contact problem, validated once: the material and the punch, the punch's motion
+    (relative speed, friction, direction) and what the equation is made of, the surface
+    constants at that speed and the signed friction mu_f = -direction * friction.  The
+    loads of a load curve share one; the cases of a batch have one each."""
+    material: object
+    punch: Punch
     const: SurfaceConstants
-    load: float
     speed: float
     friction: float
     direction: int
@@ -354,8 +355,36 @@ class _Case:
 
     @property
     def a(self) -> float:
-        """N12 mu_f, the coefficient of p in the equation (0 without friction)."""
+        """N12 mu_f, the coefficient of p in the equation (0 without friction: no friction
+        terms)."""
         return self.const.N12 * self.mu_f if self.mu_f != 0.0 else 0.0
+
+    @property
+    def b(self) -> float:
+        """N11, the coefficient of the Hilbert transform of p."""
+        return self.const.N11
+
+    def result(self, load, **fields) -> ContactResult:
+        """The ContactResult of this problem at ``load`` (``fields``: the rest)."""
+        cls = _ClosedFormContactResult if fields.get("method") == "closed_form" else \
+            ContactResult
+        return cls(constants=self.const, load=load, speed=self.speed, friction=self.friction,
+                   direction=self.direction, mu_f=self.mu_f, punch=self.punch,
+                   material=self.material, **fields)
+
+
+def _problem(material, punch, speed, friction, direction, constants) -> _Problem:
+    """The _Problem of checked inputs (``constants``: given for this speed, or None)."""
+    const = _surface_constants(material, speed, constants)
+    return _Problem(material, punch, const, float(speed), friction, direction,
+                    _signed_friction(const, friction, direction))
+
+
+@dataclass(frozen=True)
+class _Case:
+    """One case of :func:`_numeric_cases`: a problem and one load (checked)."""
+    problem: _Problem
+    load: float
 
 
 def _basis_choice(punch, n):
@@ -367,7 +396,7 @@ def _basis_choice(punch, n):
     return (n if n is not None else _N_DEFAULT), n is None
 
 
-def _numeric_cases(material, punch, cases, n, tol, errors="raise", residual=False):
+def _numeric_cases(punch, cases, n, tol, errors="raise", residual=False):
     """ContactResult of each case (one load each): the lockstep first step for those it
     finishes (:mod:`contact.lockstep`), the full continuation for the others; with
     ``errors="return"`` a library error (ContactLossError, a face without a lowest point...)
@@ -378,21 +407,19 @@ def _numeric_cases(material, punch, cases, n, tol, errors="raise", residual=Fals
     if not adaptive:
         try:
             steps = first_steps(punch.as_face(), punch.slope, tuple(punch.breaks),
-                                [c.a for c in cases],
-                                [c.const.N11 for c in cases], [c.load for c in cases], n_use)
+                                [c.problem.a for c in cases], [c.problem.b for c in cases],
+                                [c.load for c in cases], n_use)
         except (ContactInputError, sie.SIEInputError):
             steps = None        # each case alone below: each raises (or returns) its error
         if steps is not None and steps.done.size:
-            for i, r in zip(steps.done.tolist(),
-                            _lockstep_results(material, punch, cases, steps, residual)):
+            for i, r in zip(steps.done.tolist(), _lockstep_results(cases, steps, residual)):
                 out[i] = r
     for i, c in enumerate(out):
         if c is not None:
             continue
         c = cases[i]
         try:
-            out[i] = _numeric(c.const, punch, [c.load], c.speed, c.friction, c.direction,
-                              c.mu_f, n, tol, material).results[0]
+            out[i] = _numeric(c.problem, [c.load], n, tol).results[0]
         except (ContactInputError, sie.SIEInputError) as exc:
             if errors == "raise":
                 raise
@@ -420,13 +447,13 @@ def _warn_unresolved(result, n):
             sie.ResidualWarning, stacklevel=4)
 
 
-def _lockstep_results(material, punch, cases, steps, residual):
+def _lockstep_results(cases, steps, residual):
     """The ContactResult of each case the lockstep step finished."""
     sols, kinds = steps.solutions, steps.kinds
     loads = sols.integral()
     phi_ends = sols.endpoint_values() if CORNER in kinds else None
     done = [cases[i] for i in steps.done.tolist()]
-    res = _residuals(sols, punch, done) if residual else [None] * len(sols)
+    res = _residuals(sols, [c.problem for c in done]) if residual else [None] * len(sols)
     out = []
     for k, i in enumerate(steps.done.tolist()):
         c = cases[i]
@@ -435,12 +462,10 @@ def _lockstep_results(material, punch, cases, steps, residual):
         sif = {} if phi_ends is None else _sif(lambda e, k=k: float(phi_ends[k, (e + 1) // 2]),
                                                ends, kinds, alpha, beta)
         zone = ContactZone(ends, kinds, alpha, beta, sols.kappa, float(loads[k]), sif)
-        out.append(ContactResult(
-            zones=(zone,), n=sols.n, load_check=abs(float(loads[k]) - c.load) / c.load,
-            constants=c.const, load=c.load, speed=c.speed, friction=c.friction,
-            direction=c.direction, mu_f=c.mu_f, punch=punch, method="numeric",
-            solution=sols[k], material=material, _residual=res[k],
-            _residual_source=_residual_alone))
+        out.append(c.problem.result(
+            c.load, zones=(zone,), n=sols.n,
+            load_check=abs(float(loads[k]) - c.load) / c.load, method="numeric",
+            solution=sols[k], _residual=res[k], _residual_source=_residual_alone))
     return out
 
 
@@ -448,20 +473,21 @@ def _residual_alone(result):
     """The residual of a result of the lockstep step on first access: :func:`_residuals` of
     its solution as a batch of one (each row of that computation is its own: the same value
     as in its batch)."""
-    case = _Case(result.constants, result.load, result.speed, result.friction,
-                 result.direction, result.mu_f)
-    return _residuals(sie.SolutionBatch.of([result.solution]), result.punch, [case])[0]
+    problem = _Problem(result.material, result.punch, result.constants, result.speed,
+                       result.friction, result.direction, result.mu_f)
+    return _residuals(sie.SolutionBatch.of([result.solution]), [problem])[0]
 
 
-def _residuals(sols, punch, cases):
-    """:attr:`ContactResult.residual` of each solution of a batch, in one pass (the check
-    points and formula of :func:`contact.result._residual_of`)."""
+def _residuals(sols, problems):
+    """:attr:`ContactResult.residual` of each solution of a batch (one problem each, all of
+    one punch), in one pass (the check points and formula of
+    :func:`contact.result._residual_of`)."""
     iv = sols.intervals
     X = 0.5 * (iv[:, :1] + iv[:, 1:]) + 0.5 * (iv[:, 1:] - iv[:, :1]) * RESIDUAL_U
-    f = punch.slope(X.ravel()).reshape(X.shape)
+    f = problems[0].punch.slope(X.ravel()).reshape(X.shape)
     return relative_residual(f, sols.cauchy_limit_local(RESIDUAL_U),
-                             np.array([c.const.N11 for c in cases])[:, None],
-                             np.array([c.a for c in cases])[:, None]).tolist()
+                             np.array([p.b for p in problems])[:, None],
+                             np.array([p.a for p in problems])[:, None]).tolist()
 
 
 def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=None,
@@ -520,19 +546,17 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
         i = int(np.flatnonzero(np.diff(P) <= 0)[0])
         raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {float(P[i])!r} and "
                         f"loads[{i + 1}] = {float(P[i + 1])!r}")
-    const = _surface_constants(material, speed, constants)
-    mu_f = _signed_friction(const, friction, direction)
-    return _numeric(const, punch, P.tolist(), float(speed), friction, direction, mu_f, n, tol,
-                    material)
+    problem = _problem(material, punch, speed, friction, direction, constants)
+    return _numeric(problem, P.tolist(), n, tol)
 
 
-def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, material):
+def _numeric(problem, loads, n, tol):
     """The numeric path: the zones along the loads, refined in n at each load."""
-    a = const.N12 * mu_f if mu_f != 0.0 else 0.0        # no friction terms at mu = 0
+    punch = problem.punch
     n_use, adaptive = _basis_choice(punch, n)
     face = punch.as_face()
-    eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks), a=a,
-                       b=const.N11, load=loads[0], n=n_use,
+    eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks),
+                       a=problem.a, b=problem.b, load=loads[0], n=n_use,
                        n_max=_N_FOLLOW if adaptive else None)
     # adaptive: each state is refined and then checked in full (inspect_state below), so the
     # step that lands on the last load leaves the gap to that check
@@ -562,12 +586,10 @@ def _numeric(const, punch, loads, speed, friction, direction, mu_f, n, tol, mate
         sol = refined.solution
         zones = tuple(_zone_info(z, j, sol) for j, z in enumerate(refined.zones))
         integral = sum(z.load for z in zones)
-        results.append(ContactResult(
-            zones=zones, n=_basis_size(refined),
-            load_check=abs(integral - refined.load) / refined.load,
-            constants=const, load=refined.load, speed=speed, friction=friction,
-            direction=direction, mu_f=mu_f, punch=punch, method="numeric", solution=sol,
-            material=material))
+        results.append(problem.result(
+            refined.load, zones=zones, n=_basis_size(refined),
+            load_check=abs(integral - refined.load) / refined.load, method="numeric",
+            solution=sol))
     return LoadCurve(loads=np.array(loads, dtype=float), results=tuple(results),
                      events=tuple(events))
 
@@ -589,23 +611,23 @@ def _zone_info(z, j, sol):
                        lambda end: sol.endpoint_value(end, interval=interval))
 
 
-def _closed_form_result(const, punch, load, speed, friction, direction, mu_f, material):
+def _closed_form_result(problem, load):
+    """The corrected closed form of the paper's punches (:mod:`contact.closed_form`)."""
+    punch, const = problem.punch, problem.const
     solver = CLOSED_FORMS.get(type(punch))
     if solver is None:
         names = ", ".join(cls.__name__ for cls in CLOSED_FORMS)
         raise ContactInputError(
             f'method="closed_form" exists only for {names}; use method="numeric" for '
             f'{type(punch).__name__}')
-    N = (const.N11, const.N12, const.N21, const.N22, mu_f)
+    N = (const.N11, const.N12, const.N21, const.N22, problem.mu_f)
     c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
     zone = ContactZone(tuple(float(x) for x in c.ends), kinds, float(c.alpha), float(c.beta),
                        int(c.kappa), float(load), dict(c.sif))
-    return _ClosedFormContactResult(
-        zones=(zone,), n=2,
-        load_check=abs(c.load_check - load) / load, constants=const, load=load,
-        speed=speed, friction=friction, direction=direction, mu_f=mu_f, punch=punch,
-        method="closed_form", solution=c, material=material)
+    return problem.result(load, zones=(zone,), n=2,
+                          load_check=abs(c.load_check - load) / load, method="closed_form",
+                          solution=c)
 
 
 def _refollow(face, eq, refined, loads, i, tol, punch):

@@ -29,7 +29,7 @@ from hypothesis import strategies as st
 
 import contact
 from contact.lockstep import first_steps
-from contact.solver import _numeric
+from contact.solver import _numeric, _Problem
 
 ZHOU = contact.zhou2014()
 ISO = contact.Isotropic(1.0, 0.3)
@@ -77,8 +77,8 @@ def reference(material, punch, load, speed, friction, direction, n=None):
         warnings.simplefilter("ignore", contact.NearRayleighWarning)
         const = contact.surface_constants(material, speed)
     mu_f = -direction * friction if friction != 0.0 else 0.0
-    return _numeric(const, punch, [load], float(speed), friction, direction, mu_f, n, 1e-12,
-                    material).results[0]
+    problem = _Problem(material, punch, const, float(speed), friction, direction, mu_f)
+    return _numeric(problem, [load], n, 1e-12).results[0]
 
 
 def interior_points(zone, k=13):
