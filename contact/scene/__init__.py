@@ -10,6 +10,8 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     C22 = 15.4732
     C33 = 5.52
     # rho = 1.6e-6        # only needed when [motion] gives velocity instead of speed
+    # factory = "mymaterials:layered"      # instead of the stiffnesses: a material of one's
+    # arguments = { h = 0.1 }              # own (contact.Material) from module:function
 
     [punch]
     kind = "cylindrical"  # flat | triangular | parabolic | cylindrical | profile
