@@ -272,6 +272,15 @@ class Equation:
     def __setattr__(self, name, value):
         raise AttributeError(f"sie.Equation is immutable (tried to set {name!r})")
 
+    def __getstate__(self):
+        """Its fields (the prepared rules are rebuilt where it is used): for pickle."""
+        return {name: getattr(self, name) for name in self.__slots__ if name != "_prepared"}
+
+    def __setstate__(self, state):
+        for name, value in state.items():
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "_prepared", {})
+
     def __repr__(self):
         if self.cases is not None:
             l, r = self._ends[0]

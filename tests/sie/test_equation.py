@@ -179,6 +179,27 @@ def test_per_block_arguments_are_checked(kw, error, word):
         sie.Equation(**{**base, **kw})
 
 
+@pytest.mark.filterwarnings("ignore::sie.ResidualWarning")    # n = 8 on two intervals
+@pytest.mark.parametrize("kw", [
+    dict(a=[0.5, -2.0], b=[1.0, 0.7], left="bounded", right="singular", intervals=INTERVALS),
+    dict(a=[0.2, -0.7], b=1.0, left="singular", right="bounded",
+         intervals=[[(-1.0, 1.0)], [(0.0, 2.0)]]),
+])
+def test_equation_pickles(kw):
+    """An equation travels to another process (pickle) and solves there as here."""
+    import pickle
+    eq = sie.Equation(**kw)
+    eq.functionals(np.cos, n=8) if eq.cases else eq.solve(np.cos, n=8)
+    again = pickle.loads(pickle.dumps(eq))
+    assert again.exponents == eq.exponents and np.array_equal(again.intervals, eq.intervals)
+    with pytest.raises(AttributeError, match="immutable"):
+        again.cases = 3
+    s1, s2 = eq.solve(np.cos, n=8), again.solve(np.cos, n=8)
+    c1 = s1.coefficients if eq.cases else np.concatenate(s1.coefficients)
+    c2 = s2.coefficients if eq.cases else np.concatenate(s2.coefficients)
+    assert np.array_equal(c1, c2)
+
+
 def test_case_axis_take_keeps_prepared_rules():
     """take() of a case axis carries the rules prepared for an n (no new rule is built)."""
     eq = sie.Equation(a=[0.2, -0.7, 1e3], b=1.0, left="singular", right="bounded",
