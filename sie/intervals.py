@@ -121,10 +121,13 @@ def split_breaks(breaks, intervals):
     if not np.all(np.isfinite(br)):
         raise InvalidBreakpointError(f"breaks must be finite, got {br.tolist()}")
     out = [[] for _ in intervals]
-    for x in br:
+    # Python floats: the local coordinate (x - m) / h is Interval.local's (x lies strictly
+    # inside, off both ends), without numpy's cost per scalar (a contact search splits the
+    # breaks of every trial zone)
+    for x in br.tolist():
         for j, iv in enumerate(intervals):
             if iv.c < x < iv.d:
-                u = float(iv.local(x))
+                u = (x - 0.5 * (iv.c + iv.d)) / (0.5 * (iv.d - iv.c))
                 if abs(u) < 1.0:
                     out[j].append(u)
                 break
@@ -134,8 +137,6 @@ def split_breaks(breaks, intervals):
             raise cls(f"breaks must lie strictly inside {where}; got {float(x)!r}")
     res = []
     for u in out:
-        u = np.sort(np.asarray(u, dtype=float))
-        if u.size > 1:
-            u = u[np.concatenate(([True], np.diff(u) > 0.0))]
-        res.append(u)
+        u = sorted(u)
+        res.append(np.array([v for k, v in enumerate(u) if k == 0 or v > u[k - 1]], dtype=float))
     return res

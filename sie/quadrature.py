@@ -2,10 +2,13 @@
 split at breaks."""
 from __future__ import annotations
 
+import functools
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from ._jit import jit
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_project
 from .special import jacobi_end_values, jacobi_moment_shifted
@@ -78,27 +81,65 @@ class WeightedRule:
 def composite_rule(q, alpha, beta, breaks):
     """Nodes/weights for int (1-s)^alpha (1+s)^beta g(s) ds, g smooth on each piece.
 
-    Pieces split at ``breaks``; the end pieces carry the endpoint singularity in
-    their own Gauss-Jacobi rule ((0, beta) on the left, (alpha, 0) on the right),
-    the other factor is smooth there and multiplies the weights.
+    Pieces split at ``breaks`` (ascending); the end pieces carry the endpoint singularity
+    in their own Gauss-Jacobi rule ((0, beta) on the left, (alpha, 0) on the right), the
+    other factor is smooth there and multiplies the weights.
     """
-    edges = np.concatenate([[-1.0], breaks, [1.0]])
-    xs, ws = [], []
-    for i in range(len(edges) - 1):
-        lo, hi = edges[i], edges[i + 1]
+    q, alpha, beta = int(q), float(alpha), float(beta)
+    u, wu = _composite_table(q, alpha, beta)
+    return _composite_nodes(np.ascontiguousarray(breaks, dtype=float), q, alpha, beta, u, wu)
+
+
+@functools.lru_cache(maxsize=256)
+def _composite_table(q, alpha, beta):
+    """The rules :func:`composite_rule` takes its pieces from, one after the other (nodes,
+    weights): Gauss-Legendre (inner pieces), Gauss-Jacobi (0, beta) (the left end piece),
+    (alpha, 0) (the right one) and (alpha, beta) (one piece, no breaks), q nodes each."""
+    rules = [gauss_jacobi_cached(q, ea, eb)
+             for ea, eb in ((0.0, 0.0), (0.0, beta), (alpha, 0.0), (alpha, beta))]
+    return np.concatenate([r[0] for r in rules]), np.concatenate([r[1] for r in rules])
+
+
+@jit()
+def _power(x, e):
+    """x ** e as numpy forms it for an array x and a scalar e (its exact paths for
+    e = 0.5, 2, 1, 0 and -1, pow elsewhere): the compiled rule's weights are numpy's."""
+    if e == 0.5:
+        return math.sqrt(x)
+    if e == 2.0:
+        return x * x
+    if e == 1.0:
+        return x
+    if e == 0.0:
+        return 1.0
+    if e == -1.0:
+        return 1.0 / x
+    return x ** e
+
+
+@jit()
+def _composite_nodes(breaks, q, alpha, beta, tab_u, tab_w):
+    """:func:`composite_rule` from the rules of :func:`_composite_table`."""
+    pieces = breaks.shape[0] + 1
+    x = np.empty(pieces * q)
+    w = np.empty(pieces * q)
+    for i in range(pieces):
+        lo = -1.0 if i == 0 else breaks[i - 1]
+        hi = 1.0 if i == pieces - 1 else breaks[i]
         half = 0.5 * (hi - lo)
-        ea = alpha if i == len(edges) - 2 else 0.0
+        ea = alpha if i == pieces - 1 else 0.0
         eb = beta if i == 0 else 0.0
-        u, wu = gauss_jacobi_cached(q, ea, eb)
-        # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
-        s = lo + half * (u + 1.0)
-        w = wu * half ** (1.0 + ea + eb)
-        if ea == 0.0:  # the right end is not in this piece: (1-s)^alpha is smooth here
-            w = w * (1.0 - s) ** alpha
-        if eb == 0.0:
-            w = w * (1.0 + s) ** beta
-        xs.append(s)
-        ws.append(w)
-    return np.concatenate(xs), np.concatenate(ws)
-
-
+        # the rule (ea, eb): Legendre, left end, right end, or both
+        o = q * ((1 if i == 0 else 0) + (2 if i == pieces - 1 else 0))
+        scale = half ** (1.0 + ea + eb)
+        for k in range(q):
+            # s = lo + half (u + 1); (1-u)^ea (1+u)^eb carried by the rule
+            s = lo + half * (tab_u[o + k] + 1.0)
+            wk = tab_w[o + k] * scale
+            if ea == 0.0:  # the right end is not in this piece: (1-s)^alpha is smooth here
+                wk = wk * _power(1.0 - s, alpha)
+            if eb == 0.0:
+                wk = wk * _power(1.0 + s, beta)
+            x[i * q + k] = s
+            w[i * q + k] = wk
+    return x, w
