@@ -46,19 +46,21 @@ its centre (one logarithm per cluster, :func:`_log_sums`); inside from V' = -H[P
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ._jit import jit
-from .cauchy import Weight, _log_ratio, f0_closed, l0
+from .cauchy import _FAR_TERMS, Weight, _log_ratio, f0_closed, l0
 from .errors import call_checked
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_series
+from .quadrature import _power
 from .special import jacobi_moment_shifted
 
-__all__ = ["InversionRemainder"]
+__all__ = ["InversionRemainder", "log_far"]
 
 
 _GRADING = 0.15       # ratio of successive sub-intervals toward a break
@@ -66,39 +68,95 @@ _BLOCK = 1 << 20      # entries of one points-by-nodes block (8 MiB)
 _LEVELS = 19          # 0.15^19 ~ 2e-16 of the piece length is left ungraded
 
 
+_POWERS = _GRADING ** np.arange(1, _LEVELS + 1)    # 0.15^k, k = 1.._LEVELS
+_FLOOR = 1e4 * np.finfo(float).eps                # the shortest graded step
+
+
 def graded_points(breaks):
     """Breaks plus points b +- d 0.15^k (k = 1.._LEVELS), d = half the gap to the
-    neighbouring break or end: a geometric mesh toward each break (Babuska-Guo hp)."""
-    edges = np.concatenate([[-1.0], breaks, [1.0]])
-    pts = list(breaks)
-    for i, c in enumerate(breaks, start=1):
-        for side, other in ((-1.0, edges[i - 1]), (1.0, edges[i + 1])):
+    neighbouring break or end: a geometric mesh toward each break (Babuska-Guo hp).
+    Ascending, inside (-1, 1)."""
+    return _graded_points(np.ascontiguousarray(breaks, dtype=float), _POWERS, _FLOOR)
+
+
+@jit()
+def _graded_points(breaks, powers, floor):
+    """:func:`graded_points` (``powers``: 0.15^k; ``floor``: the shortest step)."""
+    nb = breaks.shape[0]
+    out = np.empty(nb * (2 * powers.shape[0] + 3))
+    m = 0
+    for i in range(nb):
+        out[m] = breaks[i]
+        m += 1
+    for i in range(nb):
+        c = breaks[i]
+        for side in (-1.0, 1.0):
+            if side < 0.0:
+                other = breaks[i - 1] if i > 0 else -1.0
+            else:
+                other = breaks[i + 1] if i < nb - 1 else 1.0
             d = 0.5 * abs(other - c)
-            steps = d * _GRADING ** np.arange(1, _LEVELS + 1)
             # r is Lipschitz across a break, so an ungraded innermost piece of length
             # 1e-12 d costs at most ~1e-12; deeper pieces would not be resolvable in floats
-            steps = steps[steps > max(1e-12 * d, 1e4 * np.finfo(float).eps)]
-            pts.extend(c + side * steps)
-            pts.append(c + side * d)
-    pts = np.unique(np.asarray(pts, dtype=float))
-    return pts[(pts > -1.0) & (pts < 1.0)]
+            least = max(1e-12 * d, floor)
+            for k in range(powers.shape[0]):
+                step = d * powers[k]
+                if step > least:
+                    out[m] = c + side * step
+                    m += 1
+            out[m] = c + side * d
+            m += 1
+    pts = np.unique(out[:m])
+    keep = (pts > -1.0) & (pts < 1.0)
+    return pts[keep]
 
 
 _Q_SMALL = 16         # Gauss nodes on a graded sub-interval (pole at >= 1.15 its length)
+_HP_SLOPE = 1.0       # ... one node fewer per level of the grading deeper toward a break,
+_HP_MIN = 4  # down to this many
 
 
 def _panels(q, breaks, pts, q_small=_Q_SMALL, shift=0):
     """The pieces of the graded mesh ``pts`` and their node counts: q (+ shift) on the
-    pieces that span most of a gap between breaks, fewer (in proportion to the piece, at
-    least q_small) on the geometric sub-intervals next to a break.  Returns (lo, hi, counts)."""
-    edges = np.concatenate([[-1.0], pts, [1.0]])
-    gaps = np.concatenate([[-1.0], breaks, [1.0]])
-    los, his = edges[:-1], edges[1:]
-    j = np.searchsorted(gaps, 0.5 * (los + his))
-    gap = gaps[j] - gaps[j - 1]
-    big = ((his - los) > 0.2 * gap) | (los == -1.0) | (his == 1.0)
-    counts = np.where(big, q, q_small + np.ceil(q * (his - los) / gap).astype(int)) + shift
-    return los, his, counts
+    pieces that span most of a gap between breaks, fewer on the geometric sub-intervals next
+    to a break or an end: q_small plus one per 1/q of the gap; next to a break one fewer
+    (_HP_SLOPE) per level deeper than the outermost, at least _HP_MIN (+ shift), except on
+    the innermost piece at the break itself.  Returns (lo, hi, counts).
+
+    Toward a break the counts fall with depth as in hp refinement (Babuska & Guo): a piece
+    k levels deep is 0.15^k as long as the outermost, the weight is smooth there and the
+    integrands bounded, so what its rule misses scales with its length times rho^(-2 count),
+    rho = 2.26 for a singularity at the break (0.15 of its length away); one node fewer per
+    level (rho^2 = 5.1 < 1 / 0.15) keeps each level's error below that of the level before.
+    The innermost piece is where the grading stops (at 1e-12 of the gap): a point inside
+    it sees the other side's innermost piece within that piece's length, which then needs
+    its full count.  Toward an end the weight (1 -+ x)^e may be singular (e < 0): a piece's share then falls
+    only like its length^(1 + e), and the counts stay.  Checked against a rule with twice the nodes on every piece
+    (tests/sie/test_remainder_rules.py): delta_phi and the log potential of w delta_phi
+    agree to rounding with and without the hp counts."""
+    return _graded_rule(q, 0.0, 0.0, breaks, pts, q_small, shift, details=True)[5:]
+
+
+@functools.lru_cache(maxsize=64)
+def _rule_table(q, q_small, shift, alpha, beta):
+    """The Gauss rules that the pieces of :func:`_panels` may ask for, concatenated (nodes,
+    weights): Gauss-Legendre with every count a graded piece may have (_HP_MIN + shift up
+    to one more than q_small + shift + 0.2 q) and with q + shift nodes, and Gauss-Jacobi
+    with q + shift nodes for an end piece (at -1, at +1, and one piece spanning both).
+    Returns (u, w, offset of the Legendre rule of each count (-1: none), offsets of the
+    end rules at -1, at +1 and of both)."""
+    qq = q + shift
+    top = q_small + shift + math.ceil(0.2 * q) + 2
+    counts = sorted(set(range(min(_HP_MIN, q_small + 1) + shift, top)) | {qq})
+    rules = [gauss_jacobi_cached(c, 0.0, 0.0) for c in counts]
+    rules += [gauss_jacobi_cached(qq, 0.0, beta), gauss_jacobi_cached(qq, alpha, 0.0),
+              gauss_jacobi_cached(qq, alpha, beta)]
+    sizes = [r[0].size for r in rules]
+    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+    legendre = np.full(max(counts) + 1, -1, dtype=np.int64)
+    legendre[counts] = starts[:len(counts)]
+    return (np.concatenate([r[0] for r in rules]), np.concatenate([r[1] for r in rules]),
+            legendre, starts[len(counts):].copy())
 
 
 def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details=False):
@@ -108,63 +166,100 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details
 
     Returns the ascending nodes and their weights; with ``details`` also, per node, the
     index of its piece and 1 - x, 1 + x to full relative precision (a node of a piece
-    1e-12 wide at an end can round onto the end itself)."""
-    los, his, counts = _panels(q, breaks, pts, q_small, shift)
-    halves = 0.5 * (his - los)
-    xs, ws, ps, oms, ops = [], [], [], [], []
-    inner = np.flatnonzero((los != -1.0) & (his != 1.0))
-    if inner.size:                               # Gauss-Legendre times the smooth weight,
-        rules = [gauss_jacobi_cached(int(k), 0.0, 0.0) for k in counts[inner]]  # all at once
-        u = np.concatenate([r[0] for r in rules])
-        wu = np.concatenate([r[1] for r in rules])
-        li, hi_i, hf = (np.repeat(a[inner], counts[inner]) for a in (los, his, halves))
-        x = li + hf * (u + 1.0)
-        # 1 -+ x from the piece's own distance to the end (exact next to it); formed from
-        # the rounded x, 1 + x at x ~ -1 + 1e-12 keeps 4 digits and int w loses 4e-10
-        one_minus = (1.0 - hi_i) + hf * (1.0 - u)
-        one_plus = (1.0 + li) + hf * (1.0 + u)
-        xs.append(x)
-        ws.append((hf * wu) * one_minus ** alpha * one_plus ** beta)
-        ps.append(np.repeat(inner, counts[inner]))
-        oms.append(one_minus)
-        ops.append(one_plus)
-    for i in np.flatnonzero((los == -1.0) | (his == 1.0)):   # an end piece: its end's weight
-        lo, hi, half, qq = los[i], his[i], halves[i], int(counts[i])
-        ea = alpha if hi == 1.0 else 0.0
-        eb = beta if lo == -1.0 else 0.0
-        u, wu = gauss_jacobi_cached(qq, ea, eb)
-        x = lo + half * (u + 1.0)
-        w = wu * half ** (1.0 + ea + eb)
-        if hi != 1.0:
-            w = w * (1.0 - x) ** alpha
-        if lo != -1.0:
-            w = w * (1.0 + x) ** beta
-        one_minus = half * (1.0 - u) if hi == 1.0 else 1.0 - x
-        one_plus = half * (1.0 + u) if lo == -1.0 else 1.0 + x
-        xs.append(x)
-        ws.append(w)
-        ps.append(np.full(x.size, i))
-        oms.append(one_minus)
-        ops.append(one_plus)
-    # ascending: by piece (the end pieces are the first and the last), each piece's Gauss
-    # nodes ascending
-    ends = np.flatnonzero((los == -1.0) | (his == 1.0))
-    order = [len(xs) - ends.size + k for k, i in enumerate(ends) if i == 0]
-    order += [0] if inner.size else []
-    order += [len(xs) - ends.size + k for k, i in enumerate(ends) if i != 0]
-    x, w = np.concatenate([xs[k] for k in order]), np.concatenate([ws[k] for k in order])
-    if not details:
-        return x, w
-    return (x, w, np.concatenate([ps[k] for k in order]),
-            np.concatenate([oms[k] for k in order]), np.concatenate([ops[k] for k in order]))
+    1e-12 wide at an end can round onto the end itself), and per piece its ends and node
+    count."""
+    q, q_small, shift, alpha, beta = int(q), int(q_small), int(shift), float(alpha), float(beta)
+    u, wu, legendre, ends = _rule_table(q, q_small, shift, alpha, beta)
+    gaps = np.concatenate([[-1.0], np.asarray(breaks, dtype=float), [1.0]])
+    out = _graded_nodes(np.ascontiguousarray(pts, dtype=float), gaps, q, q_small, shift,
+                        alpha, beta, u, wu, legendre, ends, _HP_SLOPE, _HP_MIN,
+                        math.log(1.0 / _GRADING))
+    return out if details else out[:2]
 
 
-def _nearest_distance(nodes, x):
-    """Distance from each x to the nearest of the ascending ``nodes``."""
-    i = np.searchsorted(nodes, x)
-    below = np.abs(x - nodes[np.maximum(i - 1, 0)])
-    above = np.abs(nodes[np.minimum(i, nodes.size - 1)] - x)
-    return np.minimum(below, above)
+@jit()
+def _graded_nodes(pts, gaps, q, q_small, shift, alpha, beta, tab_u, tab_w, legendre, ends,
+                  hp_slope, hp_min, log_ratio):
+    """:func:`_graded_rule` with its details: (x, w, piece, 1 - x, 1 + x, lo, hi, counts).
+    ``gaps``: -1, the breaks, +1; ``tab_u``, ``tab_w``, ``legendre``, ``ends``: the rules of
+    :func:`_rule_table`; ``hp_slope``, ``hp_min``: the counts' fall with depth
+    (:func:`_panels`); ``log_ratio``: log(1 / _GRADING)."""
+    npc = pts.shape[0] + 1
+    los = np.empty(npc)
+    his = np.empty(npc)
+    counts = np.empty(npc, dtype=np.int64)
+    total = 0
+    for i in range(npc):
+        lo = -1.0 if i == 0 else pts[i - 1]
+        hi = 1.0 if i == npc - 1 else pts[i]
+        j = np.searchsorted(gaps, 0.5 * (lo + hi))
+        gap = gaps[j] - gaps[j - 1]
+        if (hi - lo) > 0.2 * gap or lo == -1.0 or hi == 1.0:
+            cnt = q
+        else:
+            cnt = q_small + int(math.ceil(q * (hi - lo) / gap))
+            # graded toward a break (not toward an end, where the weight may be singular):
+            # one node fewer per level below the outermost graded piece (~0.064 of the gap)
+            mid = 0.5 * (lo + hi)
+            toward_end = (j == 1 and mid - gaps[0] < gaps[1] - mid) or \
+                (j == gaps.shape[0] - 1 and gaps[j] - mid < mid - gaps[j - 1])
+            # the innermost piece, at the break itself, keeps its count: the grading stops
+            # there, and a point inside it sees the other side's innermost piece within
+            # its own length
+            innermost = lo == gaps[j - 1] or hi == gaps[j]
+            if not (toward_end or innermost):
+                level = math.floor(math.log(0.2 * gap / (hi - lo)) / log_ratio)
+                cnt = max(hp_min, cnt - int(math.floor(hp_slope * level)))
+        los[i] = lo
+        his[i] = hi
+        counts[i] = cnt + shift
+        total += cnt + shift
+    x = np.empty(total)
+    w = np.empty(total)
+    piece = np.empty(total, dtype=np.int64)
+    om = np.empty(total)
+    op = np.empty(total)
+    at = 0
+    for i in range(npc):
+        lo, hi, cnt = los[i], his[i], counts[i]
+        half = 0.5 * (hi - lo)
+        left, right = lo == -1.0, hi == 1.0
+        if left or right:                    # an end piece: its end's weight in the rule
+            o = ends[2] if (left and right) else (ends[1] if right else ends[0])
+            ea = alpha if right else 0.0
+            eb = beta if left else 0.0
+            for k in range(cnt):
+                uk = tab_u[o + k]
+                xe = lo + half * (uk + 1.0)
+                we = tab_w[o + k] * half ** (1.0 + ea + eb)
+                if not right:
+                    we = we * _power(1.0 - xe, alpha)
+                if not left:
+                    we = we * _power(1.0 + xe, beta)
+                x[at + k] = xe
+                w[at + k] = we
+                piece[at + k] = i
+                om[at + k] = half * (1.0 - uk) if right else 1.0 - xe
+                op[at + k] = half * (1.0 + uk) if left else 1.0 + xe
+        else:
+            # Gauss-Legendre times the smooth weight; 1 -+ x from the piece's own distance
+            # to the end (exact next to it); formed from the rounded x, 1 + x at
+            # x ~ -1 + 1e-12 keeps 4 digits and int w loses 4e-10
+            o = legendre[cnt] if cnt < legendre.shape[0] else -1
+            if o < 0:
+                raise ValueError("graded rule: a node count outside the table")
+            for k in range(cnt):
+                uk = tab_u[o + k]
+                one_minus = (1.0 - hi) + half * (1.0 - uk)
+                one_plus = (1.0 + lo) + half * (1.0 + uk)
+                x[at + k] = lo + half * (uk + 1.0)
+                w[at + k] = ((half * tab_w[o + k]) * _power(one_minus, alpha)
+                             * _power(one_plus, beta))
+                piece[at + k] = i
+                om[at + k] = one_minus
+                op[at + k] = one_plus
+        at += cnt
+    return x, w, piece, om, op, los, his, counts
 
 
 def _end_grading(breaks):
@@ -235,21 +330,35 @@ def _panel_nodes(lo, hi, counts, at_left, at_right, lm, lp, ea, eb, ea1, eb1, ea
 
 
 # -- compiled sums over the rules ------------------------------------------------------------
+@jit()
+def _nearest(nodes, x):
+    """Distance from x to the nearest of the ascending ``nodes``."""
+    i = np.searchsorted(nodes, x)
+    below = abs(x - nodes[max(i - 1, 0)])
+    above = abs(nodes[min(i, nodes.shape[0] - 1)] - x)
+    return min(below, above)
+
+
 @jit(fastmath={"reassoc"})
-def _difference_quotient_sums(x, rx, nodes, r_nodes, weights, out):
-    """out[i] = sum_j weights[j] (r_nodes[j] - rx[i]) / (nodes[j] - x[i]), the term of a node
-    within rounding of x[i] (nodes[j] == x[i]) left out: its weight is ~1e-13 (only the
-    innermost graded pieces come that close) and its quotient 0/0.
+def _difference_quotient_sums(x, rx, nodes0, r0, weights0, nodes1, r1, weights1, out):
+    """out[i] = sum_j weights[j] (r_nodes[j] - rx[i]) / (nodes[j] - x[i]) over the rule
+    (nodes, weights, r at the nodes) of the two whose nearest node is farther from x[i],
+    so that r_nodes[j] - rx[i] never cancels badly; the term of a node within rounding of
+    x[i] (nodes[j] == x[i]) left out: its weight is ~1e-13 (only the innermost graded pieces
+    come that close) and its quotient 0/0.
 
     ``reassoc`` lets the compiler sum in vector lanes (2.5 times faster than one chain):
     the order of the sum changes, so results agree to rounding.  This is delta_phi's cost:
     points x nodes (2000 x 1200 for the rule ``w_rule`` of a face with two breaks)."""
-    m = nodes.shape[0]
     for i in range(x.shape[0]):
         xi = x[i]
         ri = rx[i]
+        if _nearest(nodes1, xi) > _nearest(nodes0, xi):
+            nodes, r_nodes, weights = nodes1, r1, weights1
+        else:
+            nodes, r_nodes, weights = nodes0, r0, weights0
         s = 0.0
-        for j in range(m):
+        for j in range(nodes.shape[0]):
             den = nodes[j] - xi
             term = (r_nodes[j] - ri) / den if den != 0.0 else 0.0
             s += weights[j] * term
@@ -365,6 +474,52 @@ def _log_sums(z, e, c, starts, centers, radii, terms, moments, out):
             out[i] += moments[k, 0] * math.log(z[i] + centers[k]) - u[i] * acc[i]
 
 
+_LOG_FAR = 2.0        # |v| from which the log potential is summed from moments ...
+_LOG_FAR_TERMS = _FAR_TERMS   # ... with at most this many terms (60: 2^-60 of
+                              # int |w delta_phi| left), as the series' far sums
+
+
+@jit(fastmath={"reassoc"})
+def _power_moments(t, c, out):
+    """out[k] = sum_j c_j t_j^k, k = 0 .. out.size - 1 (|t_j| <= 1).  ``reassoc`` lets the
+    compiler sum in vector lanes: the sums agree with a plain loop to rounding."""
+    pw = c.copy()
+    for k in range(out.shape[0]):
+        s = 0.0
+        for j in range(t.shape[0]):
+            s += pw[j]
+            pw[j] *= t[j]
+        out[k] = s
+
+
+@jit()
+def _log_far_sums(v, coef, out):
+    """out[i] = coef[0] log|v_i| - sum_{k >= 1} coef[k] / v_i^k for |v_i| >= 2: with
+    coef = (M_0, M_1 / 1, M_2 / 2, ...), M_k = sum_j c_j t_j^k the moments of c at points
+    |t_j| <= 1, this is sum_j c_j log|v - t_j| (log|v - t| = log|v| - sum_k (t / v)^k / k).
+    The terms are below sum |c_j| |v|^-k, so those with |v|^-k > 2^-(len(coef) - 1) are
+    summed (all of them at |v| = 2, fewer farther out; Horner's rule)."""
+    top = coef.shape[0] - 1
+    for i in range(v.shape[0]):
+        y = 1.0 / v[i]
+        ay = abs(y)
+        K = top
+        if ay < 0.5:
+            K = max(1, min(top, int(math.ceil(top * math.log(2.0) / -math.log(ay)))))
+        acc = coef[K]
+        for k in range(K - 1, 0, -1):
+            acc = acc * y + coef[k]
+        out[i] = coef[0] * math.log(abs(v[i])) - acc * y
+
+
+def log_far(v, coef):
+    """(1/pi) [coef[0] log|v| - sum_{k >= 1} coef[k] v^-k] at |v| >= 2 (:func:`_log_far_sums`):
+    the log potential of a density on [-1, 1] from its moments M_k, coef = (M_0, M_k / k)."""
+    out = np.empty(np.shape(v))
+    _log_far_sums(np.ascontiguousarray(v, dtype=float), coef, out)
+    return out / math.pi
+
+
 @dataclass(eq=False)
 class InversionRemainder:
     """delta_phi, its integral, Cauchy transform and logarithmic potential (module docstring).
@@ -394,6 +549,7 @@ class InversionRemainder:
     _phi_ends: np.ndarray | None = None  # delta_phi at -1 and +1
     _log_data: dict = field(default_factory=dict)   # per end: _log_clusters(end)
     _log_ends: tuple | None = None      # the log potential of w delta_phi at -1 and +1
+    _far_moments: np.ndarray | None = None  # far_coefficients()
     _interp: tuple | None = None        # barycentric data of delta_phi on the w_rule pieces
 
     @classmethod
@@ -410,11 +566,15 @@ class InversionRemainder:
         # off by 1e-4 at n = 24)
         pts = graded_points(breaks)
         alpha, beta = piece.alpha, piece.beta
-        for shift in (0, 1):    # two interleaved rules: counts differ by one on every piece,
-            # so no x (e.g. a piece midpoint, a node of every odd-count rule) is a node of both
-            nodes, weights = _graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
-            fvals = call_checked(f, "f", (nodes,), nodes.shape)
-            self.rules.append((nodes, weights, self._r(nodes, fvals)))
+        # two interleaved rules: counts differ by one on every piece, so no x (e.g. a piece
+        # midpoint, a node of every odd-count rule) is a node of both; f at both in one call
+        rules = [_graded_rule(q, -alpha, -beta, breaks, pts, _Q_SMALL, shift)
+                 for shift in (0, 1)]
+        nodes = np.concatenate([r[0] for r in rules])
+        r_all = self._r(nodes, call_checked(f, "f", (nodes,), nodes.shape))
+        cut = rules[0][0].size
+        for (x, w), r_x in zip(rules, (r_all[:cut], r_all[cut:])):
+            self.rules.append((x, w, r_x))
         self._w_mesh = pts          # the rule for integrals against w: see w_rule
         self.q = q
         self.breaks = breaks
@@ -449,11 +609,9 @@ class InversionRemainder:
         if self._w is None:
             breaks, q = self.breaks, max(self.q, 24)
             w_pts = np.union1d(self._w_mesh, _end_grading(breaks))
-            tw, ww, piece_w, om_w, op_w = _graded_rule(q, self.sol.alpha, self.sol.beta,
-                                                       breaks, w_pts, _Q_SMALL + 2,
-                                                       details=True)
-            self._w = ((tw, ww), _panels(q, breaks, w_pts, _Q_SMALL + 2),
-                       (piece_w, om_w, op_w))
+            tw, ww, piece_w, om_w, op_w, lo, hi, counts = _graded_rule(
+                q, self.sol.alpha, self.sol.beta, breaks, w_pts, _Q_SMALL + 2, details=True)
+            self._w = ((tw, ww), (lo, hi, counts), (piece_w, om_w, op_w))
         return self._w
 
     # g - Pi g at points x, given f(x)
@@ -469,18 +627,12 @@ class InversionRemainder:
         x = np.asarray(x, dtype=float)
         fx = call_checked(self.f, "f", (x,), x.shape)
         rx = self._r(x, fx)
-        # per point, the rule whose nearest node is farther from x
-        dist = [_nearest_distance(nodes, x) for nodes, _, _ in self.rules]
-        choice = (dist[1] > dist[0]).astype(int)
-        integral = np.empty(x.shape)
-        for idx, (nodes, weights, r_nodes) in enumerate(self.rules):
-            where = np.flatnonzero(choice == idx)
-            if where.size:
-                sums = np.empty(where.size)
-                _difference_quotient_sums(np.ascontiguousarray(x.ravel()[where]),
-                                          np.ascontiguousarray(rx.ravel()[where]),
-                                          nodes, r_nodes, weights, sums)
-                integral.ravel()[where] = sums / math.pi
+        sums = np.empty(x.size)
+        (n0, w0, r0), (n1, w1, r1) = self.rules
+        _difference_quotient_sums(np.ascontiguousarray(x.ravel()),
+                                  np.ascontiguousarray(rx.ravel()), n0, r0, w0, n1, r1, w1,
+                                  sums)
+        integral = sums.reshape(x.shape) / math.pi
         k = sol.kappa
         if k == 1:
             pk = (sol.alpha + 1.0) + 0.5 * (sol.alpha + sol.beta + 2.0) * (x - 1.0)
@@ -701,20 +853,45 @@ class InversionRemainder:
             out[inside] = self._log_inside(v[inside], zm1[inside], zp1[inside])
         return out
 
+    def far_coefficients(self):
+        """(M_0, M_1 / 1, ..., M_K / K), M_k = int w delta_phi t^k by ``w_rule``, K =
+        _LOG_FAR_TERMS: what :func:`log_far` sums the log potential at |v| >= 2 from (read-only;
+        computed once)."""
+        if self._far_moments is None:
+            tw, _ = self.w_rule
+            moments = np.empty(_LOG_FAR_TERMS + 1)
+            _power_moments(tw, self._w_values(), moments)
+            moments[1:] /= np.arange(1, _LOG_FAR_TERMS + 1)
+            moments.flags.writeable = False
+            self._far_moments = moments
+        return self._far_moments
+
     def _log_outside(self, v, zm1, zp1):
-        """The |v| >= 1 branch of :meth:`log_potential`: the sum of ``w_rule`` over
-        w (delta_phi - delta_phi(e)) log|v - t|, |v - t| from the offsets to the nearer end
-        e (no cancellation next to it), by clusters of nodes (:func:`_log_sums`)."""
-        right = zm1 >= 0.0
+        """The |v| >= 1 branch of :meth:`log_potential`.  |v| < _LOG_FAR: the sum of
+        ``w_rule`` over w (delta_phi - delta_phi(e)) log|v - t|, |v - t| from the offsets to
+        the nearer end e (no cancellation next to it), by clusters of nodes
+        (:func:`_log_sums`), plus delta_phi(e) times the weight's potential.  Beyond, the
+        expansion of log|v - t| in t / v over the moments of w delta_phi (:func:`log_far`,
+        :meth:`far_coefficients`)."""
         out = np.empty(v.shape)
+        far = np.abs(v) >= _LOG_FAR
+        if np.any(far):
+            out[far] = log_far(v[far], self.far_coefficients())
+        near = ~far
+        if not np.any(near):
+            return out
+        v, zm1, zp1 = v[near], zm1[near], zp1[near]
+        right = zm1 >= 0.0
+        sums = np.empty(v.shape)
         pe = np.empty(v.shape)
         for side, sel, z in ((1, right, zm1), (-1, ~right, -zp1)):
             if np.any(sel):
                 *clusters, pe[sel] = self._log_clusters(side)
-                sums = np.empty(int(np.count_nonzero(sel)))
-                _log_sums(np.ascontiguousarray(z[sel], dtype=float), *clusters, sums)
-                out[sel] = sums
-        return out / math.pi + pe * l0(self.sol.weight_data, v)
+                part = np.empty(int(np.count_nonzero(sel)))
+                _log_sums(np.ascontiguousarray(z[sel], dtype=float), *clusters, part)
+                sums[sel] = part
+        out[near] = sums / math.pi + pe * l0(self.sol.weight_data, v)
+        return out
 
     def _phi_in_piece(self, t, k):
         """delta_phi at points t of the pieces k of ``w_rule``.  On a piece where delta_phi is

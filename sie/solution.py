@@ -11,11 +11,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .cauchy import cauchy_series, evaluation_points, log_potential_series
+from .cauchy import (_FAR_SERIES_MAX_N, _far_series_table, cauchy_series, evaluation_points,
+                     log_potential_series)
 from .errors import EvaluationPointError, real_array
 from .exponents import Exponents
 from .intervals import Interval
 from .jacobi import jacobi_series
+from .remainder import _LOG_FAR, log_far
 from .special import jacobi_end_values, jacobi_moment_shifted
 from .unknowns import dominant_lambda
 
@@ -286,10 +288,29 @@ class IntervalSolution:
 
     def log_local(self, v, ends=None):
         """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v (with breaks, plus the
-        correction's part, :meth:`sie.remainder.InversionRemainder.log_potential`)."""
-        out = log_potential_series(self.coefficients, self.weight_data, v, ends)
-        if self.remainder is not None:
-            out = out + self.remainder.log_potential(v, ends)
+        correction's part, :meth:`sie.remainder.InversionRemainder.log_potential`).  With
+        breaks, at |v| >= 2 both parts at once from the sum of their moments
+        (:func:`sie.remainder.log_far`; the series' moments from the table
+        :func:`sie.cauchy.log_potential_series` takes them from)."""
+        rem = self.remainder
+        c = self.coefficients
+        if rem is None:
+            return log_potential_series(c, self.weight_data, v, ends)
+        v = np.asarray(v, dtype=float)
+        far = np.abs(v) >= _LOG_FAR
+        if c.size > _FAR_SERIES_MAX_N or not far.any():
+            return log_potential_series(c, self.weight_data, v, ends) + rem.log_potential(v, ends)
+        wt = self.weight_data
+        coef = rem.far_coefficients().copy()
+        coef[0] += c[0] * wt.mu0
+        coef[1:] += _far_series_table(wt, c.size) @ c
+        out = np.empty(v.shape)
+        out[far] = log_far(v[far], coef)
+        near = ~far
+        if near.any():
+            sub = None if ends is None else (np.asarray(ends[0])[near], np.asarray(ends[1])[near])
+            out[near] = (log_potential_series(c, wt, v[near], sub)
+                         + rem.log_potential(v[near], sub))
         return out
 
 
