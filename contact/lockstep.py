@@ -121,7 +121,9 @@ def first_steps(face, slope, breaks, a, b, loads, n) -> FirstSteps | None:
 
 def _cases(c, d):
     """The zones (c_i, d_i) as the intervals of an sie.Equation's case axis."""
-    return np.column_stack([c, d])[:, None, :]
+    out = np.empty((np.size(c), 1, 2))
+    out[:, 0, 0], out[:, 0, 1] = c, d
+    return out
 
 
 def _side_conditions(eqs, slope, P, n):

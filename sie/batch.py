@@ -214,6 +214,12 @@ class CaseRules:
     def __len__(self):
         return self.a.size
 
+    def freeze(self) -> None:
+        """Make every array read-only (rules shared between equations)."""
+        for v in vars(self).values():
+            if isinstance(v, np.ndarray):
+                v.flags.writeable = False
+
     def take(self, indices) -> "CaseRules":
         """The equations at ``indices`` (in that order), their rules kept."""
         idx = np.asarray(indices, dtype=int).reshape(-1)

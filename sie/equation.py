@@ -21,6 +21,7 @@ Muskhelishvili, Singular Integral Equations (1953), ch. 10.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -230,11 +231,7 @@ class Equation:
                 f"(solve such equations one by one)")
         if B == 0:
             raise InvalidCoefficientError("a case axis must hold at least one equation, got none")
-        good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
-        if not good.all():
-            k = int(np.flatnonzero(~good)[0])
-            raise InvalidIntervalError(f"intervals[{k}] must be a finite (c, d) with c < d, "
-                                       f"got {tuple(iv[k, 0].tolist())}")
+        _check_case_intervals(iv)
         A, Bv = _case_coefficients(a, b, B)
         left, right = check_end("left", _one(left, "left")), check_end("right", _one(right, "right"))
         exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(A.tolist(), Bv.tolist()))
@@ -302,11 +299,7 @@ class Equation:
             if iv is None or iv.shape != (self.cases, 1, 2):
                 raise InvalidIntervalError(f"intervals must have the case axis' shape "
                                            f"({self.cases}, 1, 2); got {np.shape(intervals)}")
-            good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
-            if not good.all():
-                k = int(np.flatnonzero(~good)[0])
-                raise InvalidIntervalError(f"intervals[{k}] must be a finite (c, d) with "
-                                           f"c < d, got {tuple(iv[k, 0].tolist())}")
+            _check_case_intervals(iv)
             (l, r), = self._ends
             out._set_cases(iv, self.a, self.b, l, r, self._exps, self._prepared)
             return out
@@ -443,25 +436,56 @@ class Equation:
         rules = self._prepared.get(n)
         if rules is None:
             (l, r), = self._ends
-            rules = CaseRules(self.a, self.b, n, l, r, self._exps)
+            if self.cases == 1:
+                # one case: the rules of its coefficients, ends and n, kept between
+                # equations (as one block's functionals rule is): a solve repeated with the
+                # same coefficients (a load sweep) prepares them once
+                rules = _one_case_rules(float(self.a[0]), float(self.b[0]), n, l, r)
+            else:
+                rules = CaseRules(self.a, self.b, n, l, r, self._exps)
             self._prepared[int(n) if isinstance(n, (int, np.integer)) else n] = rules
         return rules
+
+
+@functools.lru_cache(maxsize=64)
+def _one_case_rules(a, b, n, left, right):
+    """The CaseRules of one case (read-only arrays: shared by the equations that ask)."""
+    rules = CaseRules(np.array([a]), np.array([b]), n, left, right,
+                      (exponents_of(a, b, left, right),))
+    rules.freeze()
+    return rules
 
 
 def _as_interval_array(intervals):
     """``intervals`` as a float array when it has a case axis (3-D: numbers only, not
     text), else None (one equation: :func:`sie.intervals.check_intervals` checks it)."""
-    try:
-        ndim = np.ndim(intervals)
-    except ValueError:                   # ragged
-        return None
-    if ndim != 3:
-        return None
-    iv = real_array("intervals", intervals, InvalidIntervalError)
+    if isinstance(intervals, np.ndarray) and intervals.dtype == float:
+        iv = intervals
+        if iv.ndim != 3:
+            return None
+    else:
+        try:
+            ndim = np.ndim(intervals)
+        except ValueError:               # ragged
+            return None
+        if ndim != 3:
+            return None
+        iv = real_array("intervals", intervals, InvalidIntervalError)
     if iv.shape[-1] != 2:
         raise InvalidIntervalError(f"intervals with a case axis must have shape (B, 1, 2); "
                                    f"got {iv.shape}")
     return iv
+
+
+def _check_case_intervals(iv):
+    """InvalidIntervalError unless every case's interval (c, d) of ``iv`` (shape (B, 1, 2))
+    is finite with c < d."""
+    if (iv[:, 0, 0] < iv[:, 0, 1]).all() and np.isfinite(iv).all():
+        return
+    good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
+    k = int(np.flatnonzero(~good)[0])
+    raise InvalidIntervalError(f"intervals[{k}] must be a finite (c, d) with c < d, got "
+                               f"{tuple(iv[k, 0].tolist())}")
 
 
 def _one(v, name):
@@ -480,7 +504,8 @@ def _case_coefficients(a, b, B):
         A, Bv = (np.full(B, v) if np.ndim(v) == 0 else np.array(v, dtype=float)
                  for v in (a, b))
         # comparisons only: no floating-point warning for inf or NaN, which fail them
-        if np.all((np.abs(A) < 1e12 * np.abs(Bv)) & (np.abs(Bv) < np.inf) & (Bv != 0.0)):
+        absB = np.abs(Bv)
+        if ((np.abs(A) < 1e12 * absB) & (absB < np.inf) & (Bv != 0.0)).all():
             return A, Bv
     out = []
     for name, v in (("a", a), ("b", b)):
