@@ -289,7 +289,7 @@ class IntervalSolution:
     def log_local(self, v, ends=None):
         """(1/pi) int_{-1}^{1} w phi log|v - u| du at real v (with breaks, plus the
         correction's part, :meth:`sie.remainder.InversionRemainder.log_potential`).  With
-        breaks, at |v| >= 2 both parts at once from the sum of their moments
+        breaks, at abs(v) >= 2 both parts at once from the sum of their moments
         (:func:`sie.remainder.log_far`; the series' moments from the table
         :func:`sie.cauchy.log_potential_series` takes them from)."""
         rem = self.remainder
