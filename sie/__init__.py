@@ -34,7 +34,8 @@ from .exponents import Exponents, sie_exponents
 from .solution import IntervalSolution, Solution
 from .solver import N_MAX as _N_MAX
 from .solver import Functionals
-from .equation import Block, Equation, solve
+from .block import Block
+from .equation import Equation, solve
 from .special import jacobi_moment
 
 #: Largest number of Jacobi coefficients per interval that :meth:`Equation.solve`,

@@ -22,65 +22,19 @@ Muskhelishvili, Singular Integral Equations (1953), ch. 10.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 
 import numpy as np
 
 from .errors import (CallableOutputError, InvalidCoefficientError, InvalidIntervalError,
                      PerIntervalArgumentError, SideConditionError, UnsupportedEquationError,
                      real_array)
-from .exponents import Exponents, check_coefficients, check_end, exponents_of
+from .exponents import check_coefficients, check_end, exponents_of
+from .block import Block
 from .intervals import Interval, check_intervals, per_interval
 from .batch import CaseRules
 from .solver import block_functionals, solve_blocks
 
-__all__ = ["Equation", "Block", "solve"]
-
-
-@dataclass(frozen=True)
-class Block:
-    """One block of an :class:`Equation`: the unknown psi_j on the interval L_j and the
-    equation collocated there,
-
-        a psi(s) + (b/pi) PV int_L psi(t)/(t - s) dt + int_L k(s, t) psi(t) dt = f(s),
-        s in L_j.
-
-    Attributes
-    ----------
-    interval : Interval
-        L_j = [c, d].
-    a, b : float
-        The coefficients on L_j (b != 0).
-    left, right : {"bounded", "singular"}
-        psi's behaviour at c and d.
-    exponents : Exponents
-        alpha (at d), beta (at c) and the index (:func:`sie.sie_exponents`).
-    kernel : callable or None
-        k(s, t) for s in L_j and t anywhere on L (None: no kernel on this row).
-
-    References
-    ----------
-    Muskhelishvili, Singular Integral Equations (1953), ch. 10 (the exponents of each end).
-
-    Examples
-    --------
-    >>> import sie
-    >>> blk = sie.Equation(a=0.0, b=1.0, left="bounded", right="bounded").blocks[0]
-    >>> (blk.interval.c, blk.interval.d), blk.exponents.kappa
-    ((-1.0, 1.0), -1)
-    """
-    interval: Interval
-    a: float
-    b: float
-    left: str
-    right: str
-    exponents: Exponents
-    kernel: object = None
-
-    @property
-    def kappa(self) -> int:
-        """The index -(alpha + beta) of the block."""
-        return self.exponents.kappa
+__all__ = ["Equation", "solve"]
 
 
 def _check_callable(name, fn, what):
@@ -188,7 +142,7 @@ class Equation:
     """
 
     __slots__ = ("_blocks", "cases", "intervals", "a", "b", "kappa", "_multi", "_ends",
-                 "_exps", "_prepared", "_kernel")
+                 "_exps", "_prepared")
 
     def __init__(self, *, a, b, left, right, intervals=None, kernel=None):
         iv = None if intervals is None else _as_interval_array(intervals)
@@ -204,21 +158,21 @@ class Equation:
         kernels = _kernels(kernel, J)
         blocks = tuple(Block(iv_j, aj, bj, l, r, exponents_of(aj, bj, l, r), k)
                        for iv_j, (aj, bj), l, r, k in zip(ivs, A, lefts, rights, kernels))
-        self._set(blocks, None, intervals is not None, kernel)
+        self._set(blocks, intervals is not None)
 
-    def _set(self, blocks, cases, multi, kernel, prepared=None):
+    def _set(self, blocks, multi):
+        """One equation (no case axis) of the given blocks."""
         s = object.__setattr__
         s(self, "_blocks", blocks)
-        s(self, "cases", cases)
+        s(self, "cases", None)
         s(self, "_multi", multi)
-        s(self, "_kernel", kernel)
         s(self, "intervals", np.array([(b.interval.c, b.interval.d) for b in blocks]))
         s(self, "a", np.array([b.a for b in blocks]))
         s(self, "b", np.array([b.b for b in blocks]))
         s(self, "kappa", tuple(b.kappa for b in blocks))
         s(self, "_ends", tuple((b.left, b.right) for b in blocks))
         s(self, "_exps", tuple(b.exponents for b in blocks))
-        s(self, "_prepared", {} if prepared is None else prepared)
+        s(self, "_prepared", {})           # a case axis' rules; one equation has none
         for name in ("intervals", "a", "b"):
             getattr(self, name).flags.writeable = False
 
@@ -246,7 +200,6 @@ class Equation:
         s(self, "_blocks", None)               # built when asked for (:attr:`blocks`)
         s(self, "cases", int(iv.shape[0]))
         s(self, "_multi", True)
-        s(self, "_kernel", None)
         s(self, "intervals", iv)
         s(self, "a", A)
         s(self, "b", Bv)
@@ -294,8 +247,7 @@ class Equation:
         intervals are checked.  For searches over the ends of the intervals."""
         out = object.__new__(Equation)
         if self.cases is not None:
-            iv = intervals if isinstance(intervals, np.ndarray) and intervals.dtype == float \
-                else _as_interval_array(intervals)
+            iv = _as_interval_array(intervals)
             if iv is None or iv.shape != (self.cases, 1, 2):
                 raise InvalidIntervalError(f"intervals must have the case axis' shape "
                                            f"({self.cases}, 1, 2); got {np.shape(intervals)}")
@@ -309,7 +261,7 @@ class Equation:
                                            f"(as the equation's blocks), got {len(ivs)}")
         blocks = tuple(Block(iv, b.a, b.b, b.left, b.right, b.exponents, b.kernel)
                        for iv, b in zip(ivs, self.blocks))
-        out._set(blocks, None, True, self._kernel, self._prepared)
+        out._set(blocks, True)
         return out
 
     def take(self, indices) -> "Equation":
@@ -512,7 +464,7 @@ def _case_coefficients(a, b, B):
         if np.ndim(v) == 0:
             out.append([v] * B)
             continue
-        vals = list(np.asarray(v, dtype=object).reshape(-1)) if np.ndim(v) else [v]
+        vals = list(np.asarray(v, dtype=object).reshape(-1))
         if len(vals) != B:
             raise InvalidCoefficientError(
                 f"{name} must be one number for all {B} cases or one per case, got shape "

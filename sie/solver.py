@@ -38,6 +38,7 @@ from .assembly import assemble_and_solve, operator_images, probe_kernel
 from .errors import (InconsistentEquationWarning, InvalidOrderError,
                      ResidualWarning, SideConditionError, call_checked, check_finite_real,
                      check_order)
+from .block import Block
 from .exponents import Exponents, exponents_of
 from .intervals import Interval, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
@@ -356,7 +357,8 @@ class _DominantRule:
         self.exponents, self.kappa = e, e.kappa
         if e.kappa == 1:
             return
-        u = IntervalUnknown.build(_UnitBlock(a, b, e), n, np.empty(0), None, count=2)
+        u = IntervalUnknown.build(Block(Interval(-1.0, 1.0), a, b, left, right, e), n,
+                                  np.empty(0), None, count=2)
         rule, h = u.rule, u.norms
         self._h = h
         self._q_pieces = u.m_eq + _EXTRA_PER_PIECE        # nodes per piece, as solve's
@@ -395,16 +397,6 @@ class _DominantRule:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
         f1 = float(wf @ _p1(e, x)) / self._h[1]
         return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
-
-
-@dataclass(frozen=True)
-class _UnitBlock:
-    """A block on [-1, 1] without a kernel (what a functionals rule is built from)."""
-    a: float
-    b: float
-    exponents: Exponents
-    interval: Interval = Interval(-1.0, 1.0)
-    kernel: object = None
 
 
 def _p1(e, x):
