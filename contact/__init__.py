@@ -16,7 +16,7 @@ from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
                      NearRayleighWarning, ProfileCallableError, PunchGeometryError, SpeedError,
                      StressPointError, UnboundedStressError)
 from .material import Isotropic, Orthotropic, zhou2014
-from .protocol import Material, MaterialModes
+from .protocol import Material, MaterialModes, SurfaceKernel
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
 from .result import ContactZone, LoadCurve
@@ -25,7 +25,7 @@ from .solver import ContactResult, contact_length, load_curve, solve, solve_batc
 from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 
 __all__ = [
-    "Material", "MaterialModes", "Orthotropic", "Isotropic", "zhou2014",
+    "Material", "MaterialModes", "SurfaceKernel", "Orthotropic", "Isotropic", "zhou2014",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "relative_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",

@@ -618,8 +618,9 @@ def _clip(zones, lo, hi):
 def _inspect(face, eq, state, gap=True):
     """The checks of a state: p >= 0 in every zone (at 64 Chebyshev points of each), the
     gap >= 0 outside the zones (400 samples of the face, and the bottom of each of its own
-    valleys, :meth:`contact.face.Face.dips`; skipped for one zone on a convex face, where it
-    opens by itself, :attr:`contact.face.Face.opens_by_itself`, and where ``gap`` is False),
+    valleys, :meth:`contact.face.Face.dips`; skipped for one zone on a convex face of a
+    homogeneous half-space, where it opens by itself,
+    :attr:`contact.face.Face.opens_by_itself`, and where ``gap`` is False),
     each to the resolution of the solution (:func:`_resolution`)."""
     sol = state.solution
     tol = _resolution(sol)
@@ -635,7 +636,7 @@ def _inspect(face, eq, state, gap=True):
         p_inner.append(float(p[k]) / top)
         p_where.append(float(X[k]))
     valley = valley_where = None
-    if gap and not (len(state.zones) == 1 and face.opens_by_itself):
+    if gap and not (len(state.zones) == 1 and face.opens_by_itself and eq.kernel is None):
         g, X, gd, Xd = _gap_samples(face, eq, state)
         if g.size:
             rise = face.rise_scale(state)
@@ -788,7 +789,8 @@ def _gap_samples(face, eq, state, m=400):
     N12 mu_f times their loads, and
         g(X) = H(X) - H(c_1) - N12 mu_f int_{c_1}^X p + N11 (V(X) - V(c_1)).
     (g, X, gd, Xd): at ``m`` samples X of the face, and at the bottom Xd of each of its own
-    valleys outside the zones (:meth:`contact.face.Face.dips`), in one evaluation."""
+    valleys outside the zones (:meth:`contact.face.Face.dips`), in one evaluation.  A
+    layered material's kernel adds -int (K(X, t) - K(c_1, t)) p(t) dt (:mod:`contact.kernel`)."""
     X = face.sample_points(state.zones, m)
     if X.size == 0:
         return X, X, X, X
@@ -825,6 +827,9 @@ def _gap_at(face, eq, state, X, rise=None):
     ref = zones[0].c
     V = sol.log_potential(np.concatenate([[ref], X]))
     g = (face.rise_from(ref, X) if rise is None else rise) + eq.b * (V[1:] - V[0])
+    if eq.kernel is not None:
+        K = sol.kernel_integral(eq.kernel.deflection, np.concatenate([[ref], X]))
+        g = g - (K[1:] - K[0])
     if eq.a != 0.0:
         loads = [sol.integral(interval=j) for j in range(len(zones))] if len(zones) > 1 \
             else [sol.integral()]

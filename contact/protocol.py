@@ -27,7 +27,8 @@ from typing import Protocol, runtime_checkable
 
 from .errors import ContactInputError, MaterialError
 
-__all__ = ["Material", "MaterialModes", "MATERIAL_METHODS", "check_material", "call"]
+__all__ = ["Material", "MaterialModes", "SurfaceKernel", "MATERIAL_METHODS", "check_material",
+           "call"]
 
 #: The methods of :class:`Material`, as (name, signature) for the messages.
 MATERIAL_METHODS = (("surface_constants", "surface_constants(c)"),
@@ -88,6 +89,63 @@ class MaterialModes(Protocol):
 
 
 @runtime_checkable
+class SurfaceKernel(Protocol):
+    """The regular part of a surface's response to a line load: what a layer or a coating
+    adds to the half-space's.
+
+    Returned by a material's optional ``surface_kernel(c)`` (:class:`Material`).  With it the
+    surface relation of the half-space becomes
+
+        dv/dX (X, 0) = N12 q(X) + N11 Hc[p](X) + int k(X, t) p(t) dt + int k_q(X, t) q(t) dt,
+
+    and the contact equation gains the regular (Fredholm) term int k(X, t) p(t) dt, k
+    bounded and smooth on the contact (a layer of thickness h: smooth on the scale h).  The
+    gap between the zones and outside them needs the displacement itself, through an
+    antiderivative K in X, dK/dX = k (any function of t may be added: it cancels).
+
+    Attributes
+    ----------
+    slope : callable (X, t) -> ndarray
+        k(X, t): dv/dX at (X, 0) per unit normal line load at t, beyond the half-space's
+        N11 / (pi (t - X)).  Called with float arrays X, t of one shape; returns finite real
+        values of that shape.
+    deflection : callable (X, t) -> ndarray
+        K(X, t), with dK/dX = k.
+    shear_slope, shear_deflection : callable (X, t) -> ndarray, optional
+        The same per unit tangential line load (q); needed when the contact has friction
+        (q = mu_f p adds mu_f k_q to k): a kernel without them is refused there.
+    sigma_xx, shear_sigma_xx : callable (X, t) -> ndarray, optional
+        sigma_XX at (X, 0) per unit normal (tangential) line load at t, beyond the
+        half-space's; without them :meth:`contact.ContactResult.sigma_xx` is refused.
+
+    References
+    ----------
+    Erdogan, Gupta & Cook, "Numerical solution of singular integral equations", in Methods
+    of Analysis and Solutions of Crack Problems (1973), ch. 7 (a Cauchy kernel plus a
+    regular one, as the layered and bonded bodies give).
+
+    Examples
+    --------
+    A constant k = kappa tilts what the punch sees by kappa P (dv/dX gains kappa int p):
+
+    >>> import contact
+    >>> class Tilting:
+    ...     def slope(self, X, t):
+    ...         return 0.01 + 0.0 * (X + t)
+    ...     def deflection(self, X, t):
+    ...         return 0.01 * X + 0.0 * t
+    >>> isinstance(Tilting(), contact.SurfaceKernel)
+    True
+    """
+
+    def slope(self, X, t):
+        ...
+
+    def deflection(self, X, t):
+        ...
+
+
+@runtime_checkable
 class Material(Protocol):
     """What :func:`contact.solve` and the stress field need of a material.
 
@@ -117,6 +175,11 @@ class Material(Protocol):
         :class:`~contact.MaterialError` without one).
     half_space_modes : callable c -> MaterialModes
         The modes at the relative speed c (0 <= c < c_R) for the field under the surface.
+    surface_kernel : callable c -> SurfaceKernel or None, optional
+        The regular part of the surface's response at the relative speed c (a layer, a
+        coating: :class:`SurfaceKernel`); absent or None for a homogeneous half-space, whose
+        contact equations then take their kernel-free paths.  ``half_space_modes`` gives the
+        whole field under the surface, the layer's part included.
 
     Notes
     -----

@@ -14,6 +14,7 @@ import numpy as np
 
 from .constants import SurfaceConstants
 from .errors import ContactInputError, check_number, real_array
+from .kernel import own_errors
 from .punches import Punch
 
 __all__ = ["ContactResult", "ContactZone", "LoadCurve"]
@@ -180,6 +181,8 @@ class ContactResult:
     _residual: float | None = field(default=None, repr=False)
     # computes the residual of this result where the solver has its own way (a batch)
     _residual_source: object = field(default=None, repr=False)
+    # the material's regular kernel (contact.kernel.ContactKernel), None without one
+    _kernel: object = field(default=None, repr=False)
 
     # -- the zones ---------------------------------------------------------------
     def _one(self, what):
@@ -211,8 +214,11 @@ class ContactResult:
 
     @property
     def residual(self) -> float:
-        """max abs(N12 mu_f p + N11 Hc[p] - v') at 64 Chebyshev points of each zone, relative
-        to max abs(v') (or to the size of N11 Hc[p] when v' = 0); computed on first access."""
+        """max abs(N12 mu_f p + N11 Hc[p] [+ int k p] - v') at 64 Chebyshev points of each
+        zone, relative to max abs(v') (or to the size of N11 Hc[p] when v' = 0); computed on
+        first access.  A layered material's kernel term (:class:`contact.SurfaceKernel`) by
+        a finer rule than the solve's own (:meth:`sie.Solution.kernel_integral`): an
+        unresolved kernel shows here."""
         if self._residual is None:
             src = self._residual_source
             self._residual = src(self) if src is not None else _residual_of(self)
@@ -287,11 +293,17 @@ class ContactResult:
     def sigma_xx(self, X):
         """Surface in-plane stress sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p] at any real X
         (N22 multiplies the shear term, where the paper's eq. (4.3) prints N21: see the
-        documentation, Theory: errata of Zhou et al. 2014).  At mu_f = 0 only N21 p."""
+        documentation, Theory: errata of Zhou et al. 2014).  At mu_f = 0 only N21 p.  A
+        layered material adds int s(X, t) p(t) dt, s from its kernel's ``sigma_xx`` (and
+        ``shear_sigma_xx``, :class:`contact.SurfaceKernel`); without them it is refused."""
         p = self.pressure(X)
-        if self.mu_f == 0.0:
-            return self.constants.N21 * p
-        return self.constants.N21 * p + self.constants.N22 * self.mu_f * self.hilbert_pressure(X)
+        out = self.constants.N21 * p
+        if self.mu_f != 0.0:
+            out = out + self.constants.N22 * self.mu_f * self.hilbert_pressure(X)
+        if self._kernel is not None:
+            with own_errors():
+                out = out + self.solution.kernel_integral(self._kernel.sigma_xx, self._X(X))
+        return out
 
 
     # the field under the surface ------------------------------------------
@@ -494,8 +506,11 @@ def _residual_of(res):
     X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0])
                         * RESIDUAL_U for z in res.zones])
     F = res.solution.cauchy_limit(X)         # H[p] + i p on the zones (Plemelj), one pass
-    return float(relative_residual(res.punch.slope(X), F, res.constants.N11,
-                                   res.constants.N12 * res.mu_f))
+    f = res.punch.slope(X)
+    if res._kernel is not None:              # int k p moved to the right-hand side
+        with own_errors():
+            f = f - res.solution.kernel_integral(res._kernel.slope, X)
+    return float(relative_residual(f, F, res.constants.N11, res.constants.N12 * res.mu_f))
 
 
 def relative_residual(f, F, N11, a):

@@ -29,6 +29,7 @@ from sie.exponents import MIN_B_OVER_A, check_coefficients
 
 from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
+from .kernel import contact_kernel, own_errors
 from .continuation import ZoneState, follow_last_again, follow_load, inspect_state
 from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
@@ -266,8 +267,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 const = shared.get(key)
                 if const is None:
                     const = shared[key] = surface_constants(material, Vi)
-            problem = _Problem(material, punch, const, float(Vi), Mi, Di,
-                               _signed_friction(const, Mi, Di))
+            problem = _problem(material, punch, Vi, Mi, Di, const)
             if method == "closed_form":
                 out[i] = _closed_form_result(problem, Pi)
                 continue
@@ -343,8 +343,9 @@ def _signed_friction(const, friction, direction) -> float:
 class _Problem:
     """A contact problem, validated once: the material and the punch, the punch's motion
     (relative speed, friction, direction) and what the equation is made of, the surface
-    constants at that speed and the signed friction mu_f = -direction * friction.  The
-    loads of a load curve share one; the cases of a batch have one each."""
+    constants at that speed, the signed friction mu_f = -direction * friction and the
+    material's regular kernel (:mod:`contact.kernel`; None for a homogeneous half-space).
+    The loads of a load curve share one; the cases of a batch have one each."""
     material: object
     punch: Punch
     const: SurfaceConstants
@@ -352,6 +353,7 @@ class _Problem:
     friction: float
     direction: int
     mu_f: float
+    kernel: object = None
 
     @property
     def a(self) -> float:
@@ -370,14 +372,15 @@ class _Problem:
             ContactResult
         return cls(constants=self.const, load=load, speed=self.speed, friction=self.friction,
                    direction=self.direction, mu_f=self.mu_f, punch=self.punch,
-                   material=self.material, **fields)
+                   material=self.material, _kernel=self.kernel, **fields)
 
 
 def _problem(material, punch, speed, friction, direction, constants) -> _Problem:
     """The _Problem of checked inputs (``constants``: given for this speed, or None)."""
     const = _surface_constants(material, speed, constants)
-    return _Problem(material, punch, const, float(speed), friction, direction,
-                    _signed_friction(const, friction, direction))
+    mu_f = _signed_friction(const, friction, direction)
+    return _Problem(material, punch, const, float(speed), friction, direction, mu_f,
+                    contact_kernel(material, const.c, mu_f))
 
 
 @dataclass(frozen=True)
@@ -404,16 +407,19 @@ def _numeric_cases(punch, cases, n, tol, errors="raise", residual=False):
     n_use, adaptive = _basis_choice(punch, n)
     out = [None] * len(cases)
     steps = None
-    if not adaptive:
+    # the lockstep step knows no kernel: the cases of a layered material go alone
+    plain = [i for i, c in enumerate(cases) if c.problem.kernel is None]
+    if not adaptive and plain:
+        lock = [cases[i] for i in plain]
         try:
             steps = first_steps(punch.as_face(), punch.slope, tuple(punch.breaks),
-                                [c.problem.a for c in cases], [c.problem.b for c in cases],
-                                [c.load for c in cases], n_use)
+                                [c.problem.a for c in lock], [c.problem.b for c in lock],
+                                [c.load for c in lock], n_use)
         except (ContactInputError, sie.SIEInputError):
             steps = None        # each case alone below: each raises (or returns) its error
         if steps is not None and steps.done.size:
-            for i, r in zip(steps.done.tolist(), _lockstep_results(cases, steps, residual)):
-                out[i] = r
+            for k, r in zip(steps.done.tolist(), _lockstep_results(lock, steps, residual)):
+                out[plain[k]] = r
     for i, c in enumerate(out):
         if c is not None:
             continue
@@ -551,13 +557,20 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
 
 
 def _numeric(problem, loads, n, tol):
-    """The numeric path: the zones along the loads, refined in n at each load."""
+    """The numeric path: the zones along the loads, refined in n at each load (an error of
+    the contact's own raised inside sie passes as itself, :func:`contact.kernel.own_errors`)."""
+    with own_errors():
+        return _follow_loads(problem, loads, n, tol)
+
+
+def _follow_loads(problem, loads, n, tol):
+    """:func:`_numeric`."""
     punch = problem.punch
     n_use, adaptive = _basis_choice(punch, n)
     face = punch.as_face()
     eq = ZoneEquations(slope=punch.slope, rise=face.rise, breaks=tuple(punch.breaks),
                        a=problem.a, b=problem.b, load=loads[0], n=n_use,
-                       n_max=_N_FOLLOW if adaptive else None)
+                       n_max=_N_FOLLOW if adaptive else None, kernel=problem.kernel)
     # adaptive: each state is refined and then checked in full (inspect_state below), so the
     # step that lands on the last load leaves the gap to that check
     states = follow_load(face, eq, loads, final_gap=not adaptive)
@@ -614,6 +627,10 @@ def _zone_info(z, j, sol):
 def _closed_form_result(problem, load):
     """The corrected closed form of the paper's punches (:mod:`contact.closed_form`)."""
     punch, const = problem.punch, problem.const
+    if problem.kernel is not None:
+        raise ContactInputError(
+            'method="closed_form" is for a homogeneous half-space; the material has a '
+            f'surface kernel ({problem.kernel.where}): use method="numeric"')
     solver = CLOSED_FORMS.get(type(punch))
     if solver is None:
         names = ", ".join(cls.__name__ for cls in CLOSED_FORMS)

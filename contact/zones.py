@@ -5,9 +5,10 @@ On L = [c_1, d_1] U ... U [c_J, d_J] the pressure solves (Zhou et al. 2014, eqs.
 conventions of the documentation, Theory: the contact model and its conventions: v the
 Y-displacement, q = mu_f p)
 
-    N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt = H'(X),    X in L,
+    N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt [+ int_L k(X, t) p(t) dt] = H'(X),
 
-H the height of the punch face.  Each zone end is **free** (p bounded, -> 0; its position is
+X in L, H the height of the punch face, k the regular kernel of a layered material
+(:mod:`contact.kernel`; none for a homogeneous half-space).  Each zone end is **free** (p bounded, -> 0; its position is
 unknown) or a **corner** (an edge of the face: p singular, the position fixed).  The unknowns
 are the free ends and, for a zone with two corners (index 1), the load it carries; the
 equations are
@@ -17,7 +18,9 @@ equations are
 * per gap between neighbouring zones: both touch the same rigid face.  The gap
   g = H - v - v_0 has g' = H' - N11 Hc[p] off L (q = 0 there), and with
   V(X) = (1/pi) int_L p(t) log|X - t| dt (dV/dX = -Hc[p], ``sie.Solution.log_potential``)
-      g(c_{j+1}) - g(d_j) = H(c_{j+1}) - H(d_j) + N11 (V(c_{j+1}) - V(d_j)) = 0,
+      g(c_{j+1}) - g(d_j) = H(c_{j+1}) - H(d_j) + N11 (V(c_{j+1}) - V(d_j))
+                            [- int_L (K(c_{j+1}, t) - K(d_j, t)) p(t) dt] = 0,
+  (K the antiderivative of k in X),
 * the total load: int_L p = P.
 
 Zone by zone the counts agree (two free ends: two unknowns and one equation; one corner: one
@@ -94,7 +97,8 @@ class ZoneEquations:
     ``slope``: H'(X), vectorised; ``rise(x0, x1)``: H(x1) - H(x0); ``breaks``: X where H' or a
     derivative jumps; ``a`` = N12 mu_f, ``b`` = N11; ``n``: Jacobi coefficients per zone;
     ``n_max``: how far the continuation may raise n to resolve its states (None: n is
-    fixed, as the user gave it)."""
+    fixed, as the user gave it); ``kernel``: the regular kernel of a layered material
+    (:class:`contact.kernel.ContactKernel`), None for a homogeneous half-space."""
     slope: object
     rise: object
     breaks: tuple
@@ -103,6 +107,7 @@ class ZoneEquations:
     load: float
     n: int = 32
     n_max: int | None = None
+    kernel: object = None
 
     # -- the integral equation on the zones ---------------------------------------------
     def solve(self, zones, totals=None) -> sie.Solution:
@@ -113,7 +118,8 @@ class ZoneEquations:
             # a trial set of ends violates the solvability condition until Newton converges
             warnings.simplefilter("ignore", sie.InconsistentEquationWarning)
             warnings.simplefilter("ignore", sie.ResidualWarning)
-            eq = _equation(self.a, self.b, tuple((z.left, z.right) for z in zones))
+            eq = _equation(self.a, self.b, tuple((z.left, z.right) for z in zones),
+                           self.kernel)
             return eq.on([(z.c, z.d) for z in zones]).solve(
                 self.slope, n=self.n, total=list(totals), breaks=br, check_residual=False)
 
@@ -152,10 +158,10 @@ class ZoneEquations:
         """(F, solution): the scaled residuals of the side conditions (module docstring):
         each solvability residual divided by ``scale`` (default: the largest |H'| on the
         zones), each gap condition by ``scale`` times the wider zone of its pair, and the
-        load as int p / P - 1.  One zone with a free end needs only the load and the
-        solvability residual, which :meth:`sie.Equation.functionals` gives from one Gauss
-        sum, exactly as the full solve would; the solution is then None (formed once Newton
-        has converged)."""
+        load as int p / P - 1.  One zone with a free end and no kernel needs only the load
+        and the solvability residual, which :meth:`sie.Equation.functionals` gives from one
+        Gauss sum, exactly as the full solve would; the solution is then None (formed once
+        Newton has converged)."""
         scale = self._slope_scale(zones) if scale is None else scale
         R, sol = self._raw_residual(zones, totals)
         return R / self._norms(zones, scale), sol
@@ -170,15 +176,18 @@ class ZoneEquations:
     def _raw_residual(self, zones, totals):
         """(R, solution): the side conditions in their own units (solvability residuals in
         units of H', gaps in units of H, the load relative)."""
-        if len(zones) == 1 and zones[0].kappa != 1:
+        if len(zones) == 1 and zones[0].kappa != 1 and self.kernel is None:
             return self._raw_one_zone(zones[0]), None
         sol = self.solve(zones, totals)
         R = [cz for z, cz in zip(zones, sol.consistency) if z.kappa == -1]
         if len(zones) > 1:
             ends = np.array([x for z0, z1 in zip(zones[:-1], zones[1:]) for x in (z0.d, z1.c)])
             V = sol.log_potential(ends).reshape(-1, 2)
+            K = None if self.kernel is None else \
+                sol.kernel_integral(self.kernel.deflection, ends).reshape(-1, 2)
             for k, (z0, z1) in enumerate(zip(zones[:-1], zones[1:])):
-                R.append(self.rise(z0.d, z1.c) + self.b * (V[k, 1] - V[k, 0]))
+                gap = self.rise(z0.d, z1.c) + self.b * (V[k, 1] - V[k, 0])
+                R.append(gap if K is None else gap - (K[k, 1] - K[k, 0]))
         R.append(sol.integral() / self.load - 1.0)
         return np.array(R), sol
 
@@ -200,6 +209,8 @@ class ZoneEquations:
     def zone_loads(self, zones):
         """The load each zone would carry on its own (no interaction between zones; exact
         for one zone), None for a zone with two corners (its load is an unknown)."""
+        if self.kernel is not None:
+            return [None if z.kappa == 1 else self.solve([z]).integral() for z in zones]
         return [None if z.kappa == 1 else 0.5 * z.width * self._functionals(z).integral
                 for z in zones]
 
@@ -365,14 +376,16 @@ class _Budgeted:
 
 
 @functools.lru_cache(maxsize=64)
-def _equation(a, b, kinds):
+def _equation(a, b, kinds, kernel=None):
     """The sie.Equation of zones with end kinds ``kinds`` ((left, right) per zone; on
     [-1, 1] and its neighbours until :meth:`sie.Equation.on` places it), validated once per
-    coefficients and topology."""
+    coefficients, topology and kernel (``kernel``: a ContactKernel, whose ``slope`` is the
+    equation's kernel k(X, t) in the face's coordinate, or None)."""
     J = len(kinds)
     intervals = None if J == 1 else [(4.0 * j - 1.0, 4.0 * j + 1.0) for j in range(J)]
     return sie.Equation(a=a, b=b, left=[_SIE_END[l] for l, _ in kinds],
-                        right=[_SIE_END[r] for _, r in kinds], intervals=intervals)
+                        right=[_SIE_END[r] for _, r in kinds], intervals=intervals,
+                        kernel=None if kernel is None else kernel.slope)
 
 
 def _ordered(zones, lo, hi):
