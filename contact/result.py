@@ -16,16 +16,21 @@ from .constants import SurfaceConstants
 from .errors import ContactInputError, check_number, real_array
 from .kernel import own_errors
 from .punches import Punch
+from .zones import Zone
 
 __all__ = ["ContactResult", "ContactZone", "LoadCurve"]
 
 
 @dataclass(frozen=True)
 class ContactZone:
-    """One contact zone.
+    """One contact zone: the zone the continuation found (its ends and their kinds, the
+    ``zone``, as Newton's method and the checks saw it) and what the solution says of it.
 
     Attributes
     ----------
+    zone : Zone
+        ``contact.zones.Zone``: (c, d) and the kind of each end; ``ends``, ``kinds``,
+        ``kappa``, ``width`` and :meth:`points` read it.
     ends : (float, float)
         (x_left, x_right).
     kinds : (str, str)
@@ -60,17 +65,31 @@ class ContactZone:
     >>> round(z.sif["left"] * math.pi * math.sqrt(2.0), 12)
     1.0
     """
-    ends: tuple
-    kinds: tuple
+    zone: Zone
     alpha: float
     beta: float
-    kappa: int
     load: float
     _sif_source: object = field(default=None, repr=False, compare=False)
 
     @property
+    def ends(self) -> tuple:
+        return (self.zone.c, self.zone.d)
+
+    @property
+    def kinds(self) -> tuple:
+        return (self.zone.left, self.zone.right)
+
+    @property
+    def kappa(self) -> int:
+        return self.zone.kappa
+
+    @property
     def width(self) -> float:
-        return self.ends[1] - self.ends[0]
+        return self.zone.width
+
+    def points(self, u):
+        """X at local points u of [-1, 1] (u = -1 the left end)."""
+        return self.zone.points(u)
 
     @property
     def sif(self) -> dict:
@@ -503,8 +522,7 @@ def _residual_of(res):
     """Relative max residual of the dominant equation at 64 Chebyshev points per zone."""
     if res.method == "closed_form":
         return 0.0
-    X = np.concatenate([0.5 * (z.ends[0] + z.ends[1]) + 0.5 * (z.ends[1] - z.ends[0])
-                        * RESIDUAL_U for z in res.zones])
+    X = np.concatenate([z.points(RESIDUAL_U) for z in res.zones])
     F = res.solution.cauchy_limit(X)         # H[p] + i p on the zones (Plemelj), one pass
     f = res.punch.slope(X)
     if res._kernel is not None:              # int k p moved to the right-hand side

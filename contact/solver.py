@@ -38,7 +38,7 @@ from .protocol import check_material
 from .punches import Punch
 from .result import (RESIDUAL_U, ContactResult, ContactZone, LoadCurve,
                      _ClosedFormContactResult, _sif, relative_residual)
-from .zones import CORNER, ZoneEquations
+from .zones import CORNER, Zone, ZoneEquations
 
 __all__ = ["solve", "solve_batch", "load_curve", "ContactResult", "LoadCurve", "contact_length"]
 
@@ -467,7 +467,7 @@ def _lockstep_results(cases, steps, residual):
         alpha, beta = float(sols.alpha[k]), float(sols.beta[k])
         sif = {} if phi_ends is None else _sif(lambda e, k=k: float(phi_ends[k, (e + 1) // 2]),
                                                ends, kinds, alpha, beta)
-        zone = ContactZone(ends, kinds, alpha, beta, sols.kappa, float(loads[k]), sif)
+        zone = ContactZone(Zone(*ends, *kinds), alpha, beta, float(loads[k]), sif)
         out.append(c.problem.result(
             c.load, zones=(zone,), n=sols.n,
             load_check=abs(float(loads[k]) - c.load) / c.load, method="numeric",
@@ -616,11 +616,10 @@ def _zone_info(z, j, sol):
     multi = np.ndim(sol.alpha) > 0
     alpha = sol.alpha[j] if multi else sol.alpha
     beta = sol.beta[j] if multi else sol.beta
-    kappa = sol.kappa[j] if multi else sol.kappa
     load = sol.integral(interval=j) if multi else sol.integral()
     interval = j if multi else None
-    return ContactZone((float(z.c), float(z.d)), (z.left, z.right), float(alpha), float(beta),
-                       int(kappa), float(load),
+    return ContactZone(Zone(float(z.c), float(z.d), z.left, z.right), float(alpha),
+                       float(beta), float(load),
                        lambda end: sol.endpoint_value(end, interval=interval))
 
 
@@ -640,8 +639,8 @@ def _closed_form_result(problem, load):
     N = (const.N11, const.N12, const.N21, const.N22, problem.mu_f)
     c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
-    zone = ContactZone(tuple(float(x) for x in c.ends), kinds, float(c.alpha), float(c.beta),
-                       int(c.kappa), float(load), dict(c.sif))
+    zone = ContactZone(Zone(float(c.ends[0]), float(c.ends[1]), *kinds), float(c.alpha),
+                       float(c.beta), float(load), dict(c.sif))
     return problem.result(load, zones=(zone,), n=2,
                           load_check=abs(c.load_check - load) / load, method="closed_form",
                           solution=c)

@@ -86,8 +86,12 @@ class Zone:
         return self.d - self.c
 
     def points(self, u):
-        """X = m + h u at local points u of [-1, 1]."""
+        """X = m + h u at local points u of [-1, 1] (m the centre, h the half-width)."""
         return 0.5 * (self.c + self.d) + 0.5 * self.width * np.asarray(u)
+
+    def local(self, X):
+        """u = (X - m) / h: the local point of X (the inverse of :meth:`points`)."""
+        return (np.asarray(X) - 0.5 * (self.c + self.d)) / (0.5 * self.width)
 
 
 @dataclass(frozen=True)
@@ -193,10 +197,9 @@ class ZoneEquations:
 
     def _functionals(self, z):
         """sie.Functionals of one zone on its own (no other zone)."""
-        h, m = 0.5 * z.width, 0.5 * (z.c + z.d)
-        br = [(x - m) / h for x in self.breaks if z.c < x < z.d]
+        br = [float(z.local(x)) for x in self.breaks if z.c < x < z.d]
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
-        f = lambda u: self.slope(m + h * u)      # noqa: E731
+        f = lambda u: self.slope(z.points(u))      # noqa: E731
         # on [-1, 1]: the equation and its rule are prepared once, the zone maps onto it
         return _equation(self.a, self.b, ((z.left, z.right),)).functionals(f, n=self.n,
                                                                            breaks=br)
