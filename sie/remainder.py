@@ -646,6 +646,22 @@ class InversionRemainder:
     def phi(self, x):
         return self._phi_no_const(x) + self.const
 
+    def quotient_part(self, x):
+        """delta_phi without its term in r(x): -b/(a^2+b^2) I(x) + C at points x.  At an
+        end of index 0 the term left out is r(end) / lambda (lambda = -b / sin(pi alpha),
+        a^2 + b^2 = b^2 / sin^2(pi alpha)), which
+        :meth:`sie.solution.IntervalSolution.endpoint_value` folds into g(end) / lambda:
+        both grow like 1 / sin(pi alpha) as the exponent nears 0 and cancel."""
+        x = np.asarray(x, dtype=float)
+        rx = self._r(x, call_checked(self.f, "f", (x,), x.shape))
+        sums = np.empty(x.size)
+        (n0, w0, r0), (n1, w1, r1) = self.rules
+        _difference_quotient_sums(np.ascontiguousarray(x.ravel()),
+                                  np.ascontiguousarray(rx.ravel()), n0, r0, w0, n1, r1, w1,
+                                  sums)
+        a, b = self.a, self.b
+        return -b / (a * a + b * b) * sums.reshape(x.shape) / math.pi + self.const
+
     def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi.
 

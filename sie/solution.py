@@ -25,6 +25,10 @@ from .unknowns import dominant_lambda
 __all__ = ["Solution", "IntervalSolution", "end_value_gaps", "equation_end_value"]
 
 
+_BREAKS_EQUATION_END = 0.1   # with breaks, phi at a singular end from the equation where
+#                              the end's exponent is above -0.1 (IntervalSolution.endpoint_value)
+
+
 def end_value_gaps(n, eps, end):
     """P_k^{(alpha,beta)}(end) - P_k^{(-alpha,-beta)}(end), k < n, without cancellation.
 
@@ -206,20 +210,28 @@ class IntervalSolution:
     def endpoint_value(self, end, b):
         """phi(end) at the local end +1 or -1; ``b`` the equation's Cauchy coefficient.
 
-        At a singular end of an index-0 interval without breaks, from the equation at the
-        end where that keeps more digits than the series (:func:`equation_end_value`: as
-        the end's exponent tends to 0); elsewhere the series, with the breaks'
-        correction."""
-        if self.kappa == 0 and (self.alpha if end == 1 else self.beta) < 0 \
-                and self.remainder is None and self.end_rhs is not None:
+        At a singular end of an index-0 interval, from the equation at the end where that
+        keeps more digits than the series (:func:`equation_end_value`: as the end's exponent
+        tends to 0); elsewhere the series, with the breaks' correction.  With breaks the
+        correction's r(end) / lambda, the term that differs between the two forms, cancels
+        in their sum: the equation's form adds only the rest of the correction
+        (:meth:`sie.remainder.InversionRemainder.quotient_part`), and is taken only for an
+        exponent within 0.1 of 0, where the series keeps less than a tenth of its digits
+        (the rest's integral has rounding of its own, ~ 1e-16 times the other end's mass
+        1 / (1 - abs(eps)): 1e-13 of phi at eps = -0.49, where the series keeps 4e-15)."""
+        eps = self.alpha if end == 1 else self.beta
+        if self.kappa == 0 and eps < 0 and self.end_rhs is not None and \
+                (self.remainder is None or eps > -_BREAKS_EQUATION_END):
             e, i = self.exp, (end + 1) // 2
             g, size = self.end_rhs
             value, better = equation_end_value(
-                self.coefficients[None, :], [e.alpha if end == 1 else e.beta],
-                [e.alpha_p1 if end == 1 else e.beta_p1], end, g[i:i + 1], size[i:i + 1],
-                np.array([dominant_lambda(e, b)]))
+                self.coefficients[None, :], [eps], [e.alpha_p1 if end == 1 else e.beta_p1],
+                end, g[i:i + 1], size[i:i + 1], np.array([dominant_lambda(e, b)]))
             if better[0]:
-                return float(value[0])
+                if self.remainder is None:
+                    return float(value[0])
+                at = np.array([float(end)])
+                return float(value[0] + self.remainder.quotient_part(at)[0])
         return float(self.phi_local(np.array([float(end)]))[0])
 
     def phi_local(self, u):

@@ -43,7 +43,7 @@ from .exponents import Exponents, exponents_of
 from .intervals import Interval, per_interval, split_breaks
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde, plateau_start
 from .solution import IntervalSolution, Solution
-from .quadrature import composite_rule
+from .quadrature import composite_weighted_rule
 from .unknowns import _EXTRA_PER_PIECE, IntervalUnknown
 
 __all__ = ["solve_blocks", "block_functionals", "Solution", "Exponents", "Functionals", "N_MAX"]
@@ -389,13 +389,17 @@ class _DominantRule:
 
     def _with_breaks(self, f, br):
         e = self.exponents
-        x, w = composite_rule(self._q_pieces, -e.alpha, -e.beta, br)
+        rule = composite_weighted_rule(self._q_pieces, -e.alpha, -e.beta, e.alpha_m1,
+                                       e.beta_m1, br)
+        x = np.append(rule.x, float(rule.end)) if rule.end else rule.x
         fs = call_checked(f, "f", (x,), x.shape)
-        wf = w * fs
-        f0 = float(np.sum(wf)) / self._h[0]
+        q = rule.x.size
+        wf = rule.omega * fs[:q]
+        p_end = rule.corr * fs[q] * rule.end_values(2) if rule.end else np.zeros(2)
+        f0 = (float(np.sum(wf)) + p_end[0]) / self._h[0]
         if self.kappa == 0:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
-        f1 = float(wf @ _p1(e, x)) / self._h[1]
+        f1 = (float(wf @ _p1(e, rule.x)) + p_end[1]) / self._h[1]
         return Functionals(self._scale * f1, f0, e.alpha, e.beta, -1)
 
 

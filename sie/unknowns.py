@@ -23,7 +23,7 @@ from .errors import call_checked
 from .exponents import Exponents
 from .intervals import Interval
 from .jacobi import jacobi_norms, jacobi_project, jacobi_vandermonde
-from .quadrature import WeightedRule, composite_rule
+from .quadrature import WeightedRule, composite_weighted_rule
 from .special import jacobi_moment_shifted
 
 __all__ = ["IntervalUnknown", "dominant_lambda"]
@@ -60,6 +60,9 @@ class IntervalUnknown:
         The dominant operator's factor lambda.
     rule : WeightedRule or None
         Gauss-Jacobi rule of (1-u)^{-alpha}(1+u)^{-beta} (None with breaks: composite rule).
+    split : WeightedRule or None
+        With breaks, the composite rule when it splits off an end's mass
+        (:func:`sie.quadrature.composite_weighted_rule`), else None.
     s, ws : ndarray
         Projection nodes (local) and weights.
     norms : ndarray
@@ -79,6 +82,7 @@ class IntervalUnknown:
     ws: np.ndarray
     norms: np.ndarray
     weight: Weight = field(repr=False)
+    split: WeightedRule | None = None
 
     @classmethod
     def build(cls, block, n, breaks, total, count=None):
@@ -89,14 +93,18 @@ class IntervalUnknown:
         m_eq = n - e.kappa
         count = m_eq if count is None else count
         norms = _projection_norms(count, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
+        split = None
         if breaks.size == 0:
             rule = _projection_rule(m_eq, e.alpha, e.beta, e.alpha_m1, e.beta_m1)
             s, ws = rule.x, rule.omega
         else:
             rule = None
-            s, ws = composite_rule(m_eq + _EXTRA_PER_PIECE, -e.alpha, -e.beta, breaks)
+            comp = composite_weighted_rule(m_eq + _EXTRA_PER_PIECE, -e.alpha, -e.beta,
+                                           e.alpha_m1, e.beta_m1, breaks)
+            s, ws = comp.x, comp.omega
+            split = comp if comp.end else None
         return cls(block.interval, block.a, b, block.kernel, e, n, breaks, total,
-                   dominant_lambda(e, b), rule, s, ws, norms, Weight.from_exponents(e))
+                   dominant_lambda(e, b), rule, s, ws, norms, Weight.from_exponents(e), split)
 
     @property
     def kappa(self) -> int:
@@ -113,9 +121,17 @@ class IntervalUnknown:
         return jacobi_moment_shifted(self.exp.alpha_p1, self.exp.beta_p1)
 
     @property
+    def end_rule(self) -> WeightedRule | None:
+        """The projection rule that splits off an end's mass (None: none does)."""
+        if self.rule is not None:
+            return self.rule if self.rule.end else None
+        return self.split
+
+    @property
     def end(self) -> int:
         """The end whose mass the projection rule splits off (0: none)."""
-        return self.rule.end if self.rule is not None else 0
+        r = self.end_rule
+        return r.end if r is not None else 0
 
     def sample_points(self):
         """Local points where the projection needs values: the nodes, and the split-off end."""
@@ -139,14 +155,15 @@ class IntervalUnknown:
         q = self.s.size
         if v.ndim == 1 and count * q > _PROJECTOR_CACHE_MAX:
             # large n: blocked sums, no count-by-q matrix
-            if self.rule is not None:
-                out = self.rule.project(v[:q], v[q] if self.end else 0.0, count)
+            rule = self.rule if self.rule is not None else self.split
+            if rule is not None:
+                out = rule.project(v[:q], v[q] if self.end else 0.0, count)
             else:
                 out = jacobi_project(self.ws * v, -self.exp.alpha, -self.exp.beta, self.s, count)
             return out / self.norms[:count]
         out = self._projector[:count] @ v[:q]
         if self.end:
-            ev = self.rule.corr * self.rule.end_values(count)
+            ev = self.end_rule.corr * self.end_rule.end_values(count)
             out = out + (ev * v[q] if v.ndim == 1 else np.outer(ev, v[q]))
         return out / (self.norms[:count] if v.ndim == 1 else self.norms[:count, None])
 

@@ -11,7 +11,7 @@ from mpmath import mp
 import sie
 import sie.exponents
 from sie.exponents import sie_exponents
-from sie.quadrature import WeightedRule
+from sie.quadrature import WeightedRule, composite_weighted_rule
 from sie.special import jacobi_end_values, jacobi_moment_shifted
 
 mp.dps = 40
@@ -76,6 +76,33 @@ def test_end_corrected_rule_integrates_polynomials(end, ep1):
         ref = mu0 * end ** k + mp.quad(lambda x: (1 - x) ** A * (1 + x) ** B * (x ** k - end ** k),
                                        [-1, 0, 1])
         assert abs(got / ref - 1) < 1e-14
+
+
+@pytest.mark.parametrize("end", [1, -1])
+@pytest.mark.parametrize("ep1", [3.183098861837907e-09, 1e-5, 0.005])
+def test_composite_rule_splits_the_end_mass(end, ep1):
+    """The composite rule of a projection with breaks, split at -0.4 and 0.3, with the mass
+    ~ 1/(e+1) of the end split off as the Gauss rule's: int W x^k to 1e-14 of itself, the
+    remainder int W (x^k - end^k) to 1e-13 (mpmath, 40 digits).  Without the split the sum
+    loses eps / (e + 1): the projections of a moving punch with breaks at a huge friction."""
+    other = 0.37
+    if end == 1:
+        a, b, a_p1, b_p1 = ep1 - 1.0, other, ep1, 1.0 + other
+    else:
+        a, b, a_p1, b_p1 = other, ep1 - 1.0, 1.0 + other, ep1
+    rule = composite_weighted_rule(16, a, b, a_p1, b_p1, np.array([-0.4, 0.3]))
+    assert rule.end == end
+    A, B = mp.mpf(a_p1) - 1, mp.mpf(b_p1) - 1
+    mu0 = mp.mpf(2) ** (A + B + 1) * mp.beta(A + 1, B + 1)
+    for k in (1, 4, 9, 17):
+        rest = mp.quad(lambda x: (1 - x) ** A * (1 + x) ** B * (x ** k - end ** k),
+                       [-1, -0.4, 0.3, 1])
+        got = float(np.sum(rule.omega * (rule.x ** k - end ** k)))
+        assert abs(got - rest) <= 1e-13 * max(1.0, abs(rest)), k
+        full = float(np.sum(rule.omega * rule.x ** k) + end ** k * rule.corr)
+        assert abs(full / (mu0 * end ** k + rest) - 1) < 1e-14, k
+    plain = composite_weighted_rule(16, a, b, a_p1 + 0.5, b_p1 + 0.5, np.array([0.3]))
+    assert plain.end == 0 and plain.corr == 0.0
 
 
 def _exact_solution(a, b, left, right, x):
