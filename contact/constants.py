@@ -531,9 +531,9 @@ def _decreasing_root(f, lo: float, hi: float) -> float:
     one), returning the one with the smaller |f|; the rounding noise of f itself limits
     this to about one ulp.  Bisection rather than scipy.optimize.brentq: Brent's method
     stops a few ulp away and needs this bisection after it anyway, and importing
-    scipy.optimize adds ~0.15 s to every start of the ``contact`` command (0.55 -> 0.40 s on
-    a 2-core VM) and of every worker process that is not forked, for a root memoised per
-    material that bisection finds in ~55 evaluations of f (~30 us).
+    scipy.optimize is a noticeable part of the start of the ``contact`` command and of every
+    worker process that is not forked (docs: Accuracy and speed), for a root memoised per
+    material that bisection finds in ~55 evaluations of f.
     """
     a, b = float(lo), float(hi)
     while True:

@@ -488,7 +488,7 @@ def _level_placement(face, x0, seed, c, d):
     fa, fb = face.rise(a, a + width), face.rise(b, b + width)
     if not fa < 0.0 < fb:
         return c, d
-    from scipy.optimize import brentq       # here: ~0.15 s of every start otherwise
+    from scipy.optimize import brentq       # here: its import slows every start otherwise
     c0 = brentq(lambda u: face.rise(u, u + width), a, b, xtol=1e-6 * width)
     shift = (0.5 * (seed.c + seed.d) - x0) * width / seed.width
     c1, d1 = c0 + shift, c0 + width + shift

@@ -444,7 +444,7 @@ class Face:
         """The zero of the slope between a and b, where it changes sign (Brent's method);
         where the two ends' slopes do not differ in sign (a change that was rounding noise
         of a slope from the height), the end with the smaller slope."""
-        from scipy.optimize import brentq   # here: ~0.15 s of every start otherwise
+        from scipy.optimize import brentq   # here: its import slows every start otherwise
 
         def f(x):
             return float(self.slope(np.array([x]))[0])

@@ -241,8 +241,7 @@ def check_material(material, name: str = "material") -> None:
     """Raise :class:`~contact.ContactInputError` unless ``material`` has the methods of
     :class:`Material`, naming those it lacks and what is allowed.
 
-    A few attribute look-ups (about a microsecond): :func:`contact.solve_batch` runs it for
-    every case.
+    A few attribute look-ups: :func:`contact.solve_batch` runs it once for all its cases.
     """
     for method, _ in MATERIAL_METHODS:
         if not callable(getattr(material, method, None)):

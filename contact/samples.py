@@ -18,7 +18,7 @@ and 5.0-5.3); a parabola (the cylinder) is reproduced exactly up to rounding.
 
 ``kind="cubic"``: the not-a-knot cubic spline (H to O(h^4), H' to O(h^3)).  Its slope is only
 C^1 (H''' jumps by O(h)): once a knot lies inside the contact and no breaks are passed,
-contact.solve's adaptive n reaches its cap (n = 3072, ~70 ms) and warns, for every N measured
+contact.solve's adaptive n reaches its cap (n = 3072) and warns, for every N measured
 (6 .. 1000), although the ends are those of the solve with breaks; prefer quintic unless the
 data cannot bear a degree-5 fit.  Not offered: pchip / Akima (H only C^1, so H' has kinks at
 every sample: first-order convergence in n without breaks, and third order at best in H).
@@ -36,8 +36,8 @@ Breaks policy (``breaks="auto"``)
 * Every break splits the solver's projection rule (n - kappa + 24 nodes per piece,
   ``sie.unknowns._EXTRA_PER_PIECE``) and adds a pointwise correction to the solution, and a
   contact search solves many trial contacts: with about 150 knots inside the contact
-  (N = 1000 samples of a cylinder on [-2, 2], P = 0.01) one contact solve takes ~20 s with
-  all knots as breaks against ~25 ms without.
+  (N = 1000 samples of a cylinder on [-2, 2], P = 0.01) one contact solve with all knots as
+  breaks costs some hundred times the solve without (``make bench``).
 * The ends do not change: without breaks they agree with the all-breaks solve to 1e-13 and
   with the exact face to the interpolation error (3.1e-6 / 1.7e-8 / 2.2e-10 / 3.8e-12 at
   N = 10 / 20 / 40 / 80 for H = 1 - cos X), because the unresolved jumps are of the size of
@@ -250,8 +250,8 @@ def face_from_samples(X, h, *, kind="quintic", breaks="auto", outside="raise") -
         raise SampleError(f"X must be strictly increasing (sorted, no repeated X), got "
                           f"X[{i}] = {float(Xa[i])!r} and X[{i + 1}] = {float(Xa[i + 1])!r}: {what}")
     deg = min(_DEGREE[kind], N - 1)
-    # imported here: scipy.interpolate adds ~20 ms to the start of every `contact run`,
-    # and only a face given by samples needs it
+    # imported here: scipy.interpolate slows the start of every `contact run`, and only a
+    # face given by samples needs it
     from scipy.interpolate import make_interp_spline
     H = make_interp_spline(Xa, ha, k=deg)          # not-a-knot for odd k; N = k + 1: polynomial
     dH = H.derivative()

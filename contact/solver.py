@@ -50,8 +50,10 @@ _N_MAX = 4096      # adaptive doubling stops here
 # --------------------------------------------------------------------------
 # public entry point
 # --------------------------------------------------------------------------
-def _check_inputs(material, punch, load, speed, friction, direction, method, n, tol):
-    check_material(material)
+def _check_inputs(material, punch, load, speed, friction, direction, method, n, tol,
+                  material_checked=False):
+    if not material_checked:
+        check_material(material)
     if not isinstance(punch, Punch):
         raise ContactInputError(
             "punch must be one of FlatPunch, TriangularPunch, ParabolicPunch, CylindricalPunch, "
@@ -256,10 +258,13 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                                 f"({count}), got {len(constants)}")
     cases, out = [], [None] * count
     shared = {}
+    material_ok = False
     for i, (Pi, Vi, Mi, Di) in enumerate(zip(P.ravel().tolist(), V.ravel().tolist(),
                                              M.ravel().tolist(), D.ravel().tolist())):
         try:
-            Pi, Mi, Di, _ = _check_inputs(material, punch, Pi, Vi, Mi, Di, method, n, tol)
+            Pi, Mi, Di, _ = _check_inputs(material, punch, Pi, Vi, Mi, Di, method, n, tol,
+                                          material_checked=material_ok)
+            material_ok = True          # one material for all: checked once
             if constants is not None:
                 const = _surface_constants(material, Vi, constants[i])
             else:

@@ -41,7 +41,7 @@ from .special import jacobi_moment
 #: Largest number of Jacobi coefficients per interval that :meth:`Equation.solve`,
 #: :meth:`Equation.functionals` and :func:`solve` accept (``sie.solver.N_MAX``;
 #: a larger ``n`` raises :class:`InvalidOrderError`).  The projection is dense: O(n^2) work
-#: and memory per interval, about 1 s at n = N_MAX.  A solution that needs more terms has a
+#: and memory per interval.  A solution that needs more terms has a
 #: singularity the basis does not carry (pass ``breaks=`` at kinks of f) or should be split
 #: into intervals.
 N_MAX = _N_MAX

@@ -233,8 +233,8 @@ class SweepCsv:
     known from the first case on, and each case's row as such a table has it
     (:meth:`SweepTable.single_zone_row`) also goes, under that header, to a second file,
     which :meth:`write` then moves into place as sweep.csv: a sweep of one-zone cases is
-    neither read back nor copied at the end (a 3.2e6-case sweep's 0.5 GB, 0.6-1.2 s in the
-    process that writes, while the workers of a pool wait).  A case with several zones drops
+    neither read back nor copied at the end (a sweep of millions of cases writes a table
+    of some hundred MB, which the workers of a pool would wait for).  A case with several zones drops
     that file, and the rows are laid out again from the raw spool.
 
     Parameters
