@@ -3,7 +3,14 @@ pools and Dask clusters give the serial run's results, and ``contact run`` exits
 0 with ``--jobs`` and ``--scheduler`` alike.  Its timings and targets are for ``make bench``
 and are not judged here; what is checked is that the benchmark works and that its Dask
 settings reach the workers as the README says (no statistical profiler, MALLOC_TRIM_THRESHOLD_
-unset, Dask's one-thread BLAS limits kept)."""
+unset, Dask's one-thread BLAS limits kept).
+
+``contact run`` is timed here once (the module fixture ``cli``: ``--jobs 1`` and ``--jobs 2``,
+quiet and printed, and a cluster of 2), with the machine's ceiling read for 0.2 s instead of
+the benchmark's 2 s; the tests of its rows share that run.  The rows of the default pool
+sizes (1, 2, 4, 8, 16 and the machine's cores, up to them) with 3 repeats each are timed by
+``make bench`` (``python -m validation.bench_sweep``)."""
+import functools
 import math
 import os
 import threading
@@ -31,10 +38,27 @@ def test_sweep_config_reaches_the_workers():
     assert settings == (False, "1s", None, "1")
 
 
+@pytest.fixture(scope="module")
+def cli():
+    """The rows of ``contact run`` timed once for the tests of this module: a 10 x 12 sweep,
+    ``--jobs 1`` and ``--jobs 2`` (what the default pool sizes are on 2 cores), quiet and
+    with the table printed, a LocalCluster of 2, one run each; N processes solving alone for
+    0.2 s before each ``--jobs N`` run (the benchmark's 2 s only steadies the reading)."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(bench_sweep, "processes_alone",
+                   functools.partial(bench_sweep.processes_alone, seconds=0.2))
+        return bench_sweep.cli_rows(10, 12, repeats=1, counts=[2], printed=True)
+
+
+def _quiet(rows):
+    """The rows of the quiet runs and the machine's ceiling (the printed runs left out)."""
+    return [row for row in rows if "table printed" not in row[0]]
+
+
 @pytest.mark.slow
-def test_every_configuration_runs_and_agrees_with_serial():
+def test_every_configuration_runs_and_agrees_with_serial(cli):
     scene = parse_scene_text(bench_sweep.sweep_toml(10, 12), source="<bench smoke>")
-    rows = bench_sweep.scaling_rows(scene) + bench_sweep.cli_rows(10, 12, repeats=1)
+    rows = bench_sweep.scaling_rows(scene) + _quiet(cli)
     names = [name for name, *_ in rows]
     assert not [n for n in names if "RESULTS DIFFER" in n or "FAILED" in n], names
     assert sum("process pool" in n for n in names) >= 2
@@ -158,9 +182,8 @@ def test_the_timed_sweep_has_the_cases_asked_per_core_and_1e5_at_least():
 
 
 @pytest.mark.slow
-def test_the_default_run_with_its_table_is_timed_beside_the_quiet_one():
-    rows = bench_sweep.cli_rows(6, 6, repeats=1, counts=[2], printed=True)
-    printed = [(name, ratio) for name, _, ratio, _ in rows if "table printed" in name]
+def test_the_default_run_with_its_table_is_timed_beside_the_quiet_one(cli):
+    printed = [(name, ratio) for name, _, ratio, _ in cli if "table printed" in name]
     assert [name for name, _ in printed] == [
         "`contact run --jobs 1` (the table printed, the progress bar)",
         "`contact run --jobs 2` (the table printed, the progress bar)"]
@@ -170,11 +193,10 @@ def test_the_default_run_with_its_table_is_timed_beside_the_quiet_one():
 
 
 @pytest.mark.slow
-def test_the_pool_sizes_asked_are_timed_and_one_besides():
+def test_the_pool_sizes_asked_are_timed_and_one_besides(cli):
     """--counts 2: --jobs 1 (the reference) and --jobs 2, and the cluster of 2 paired with
     the pool of 2; none of the other default sizes."""
-    rows = bench_sweep.cli_rows(6, 6, repeats=1, counts=[2])
-    names = [name for name, *_ in rows]
+    names = [name for name, *_ in cli]
     assert [n for n in names if n.startswith("`contact run --quiet --jobs")] == \
         ["`contact run --quiet --jobs 1`", "`contact run --quiet --jobs 2`"]
     assert sum("LocalCluster, 2 worker" in n for n in names) == 1
