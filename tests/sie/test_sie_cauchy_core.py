@@ -9,9 +9,14 @@ from hypothesis import strategies as st
 
 import sie
 
-# references at 60 digits (mp.workdps, not the global mp.dps that other test modules set):
-# tanh-sinh stops ~10^-dps from an end, and a -0.7 end would miss (1e-30)^0.3 of its mass at 30
-DPS = 60
+# references at 30 digits (mp.workdps, not the global mp.dps that other test modules set), the
+# ends' factors absorbed by a change of variable (_quad_weighted): integrated in t, tanh-sinh
+# stops ~10^-dps from an end, and a -0.7 end would miss (1e-30)^0.3 of its mass at 30 digits
+# (60 digits and 10x the time were needed for 1e-18 without the change of variable)
+DPS = 30
+#: the tolerance's scale, an integral of absolute values (kinks where psi changes sign), only
+#: sizes the tolerance: 15 digits and tanh-sinh degree 4 at most give it to 3e-4
+SCALE_DPS, SCALE_DEGREE = 15, 4
 
 
 def _mp_jacobi_series(c, a, b, t):
@@ -28,26 +33,39 @@ def _mp_jacobi_series(c, a, b, t):
     return out
 
 
+def _quad_weighted(alpha, beta, h, **quad):
+    """int (1-t)^alpha (1+t)^beta h(t) dt, h smooth on [-1, 1], by tanh-sinh on [-1, 0] and
+    [0, 1], the end pieces in u = (1 -+ t)^(1+e)/(1+e) (du = (1 -+ t)^e dt: the end factor
+    absorbed, the integrand bounded), as tests/sie/test_breaks.py's int_weighted."""
+    a, b = mp.mpf(alpha), mp.mpf(beta)
+    p, q = 1 + b, 1 + a
+
+    def left(u):
+        t = -1 + (p * u) ** (1 / p)
+        return (1 - t) ** a * h(t)
+
+    def right(u):
+        t = 1 - (q * u) ** (1 / q)
+        return (1 + t) ** b * h(t)
+    return mp.quad(left, [0, 1 / p], **quad) + mp.quad(right, [0, 1 / q], **quad)
+
+
 @mp.workdps(DPS)
 def _quad_transform(alpha, beta, c, z):
-    """(1/pi) int (1-t)^alpha (1+t)^beta sum c_k P_k(t) / (t - z) dt by mpmath (tanh-sinh)."""
+    """(1/pi) int (1-t)^alpha (1+t)^beta sum c_k P_k(t) / (t - z) dt by mpmath (tanh-sinh);
+    the same values as plain tanh-sinh in t at 60 digits."""
     z = mp.mpc(z)
-
-    def g(t):
-        p = _mp_jacobi_series(c, alpha, beta, t)
-        return (1 - t) ** alpha * (1 + t) ** beta * p / (t - z)
-    return complex(mp.quad(g, [-1, 0, 1]) / mp.pi)
+    return complex(_quad_weighted(alpha, beta, lambda t: _mp_jacobi_series(c, alpha, beta, t)
+                                  / (t - z)) / mp.pi)
 
 
-@mp.workdps(DPS)
+@mp.workdps(SCALE_DPS)
 def _abs_scale(alpha, beta, c, z):
     """(1/pi) int |psi(t)| / |t - z| dt: the size of the terms the transform sums."""
     z = mp.mpc(z)
-
-    def g(t):
-        p = _mp_jacobi_series(c, alpha, beta, t)
-        return abs((1 - t) ** alpha * (1 + t) ** beta * p / (t - z))
-    return float(mp.quad(g, [-1, 0, 1]) / mp.pi)
+    return float(_quad_weighted(alpha, beta, lambda t: abs(_mp_jacobi_series(c, alpha, beta, t)
+                                                           / (t - z)),
+                                maxdegree=SCALE_DEGREE) / mp.pi)
 
 
 C = [0.7, -0.3, 0.2, 0.05, -0.01]
@@ -129,20 +147,42 @@ def test_complex_point_on_the_interval_is_rejected():
     assert np.isrealobj(sol.cauchy(np.array([2.0 + 0.0j]).real))
 
 
+def _log_potential_quad(sol, x, size=False, **quad):
+    """(1/pi) int psi(t) log|x - t| dt by mpmath (tanh-sinh, split at x inside [-1, 1]), or
+    with ``size`` the integral of its absolute value.  The piece from the singular end -1
+    (beta < 0) is taken in u = (1+t)^(1+beta)/(1+beta), du = (1+t)^beta dt, which absorbs
+    the end's factor (as _quad_weighted; the right end's exponent is positive).  1 + t is
+    formed as such, so that log|x - t| at x = -1 is log(1 + t) without cancellation."""
+    a, b = mp.mpf(sol.alpha), mp.mpf(sol.beta)
+    cf = [float(v) for v in sol.coefficients]
+    x = mp.mpf(x)
+    split = x if abs(x) < 1 else mp.mpf(0)
+    p = 1 + b
+
+    def f(t, s):                                    # s = 1 + t
+        v = (1 - t) ** a * _mp_jacobi_series(cf, a, b, t) * mp.log(abs((x + 1) - s))
+        return abs(v) if size else v
+
+    def from_left_end(u):
+        s = (p * u) ** (1 / p)
+        return f(s - 1, s)
+    total = mp.quad(from_left_end, [0, (1 + split) ** p / p], **quad)
+    total += mp.quad(lambda t: (1 + t) ** b * f(t, 1 + t), [split, 1], **quad)
+    return float(total / mp.pi)
+
+
 @pytest.mark.parametrize("x", [-3.0, -1.0, -0.4, 0.6, 1.3])
-@mp.workdps(DPS)
 @pytest.mark.slow
 def test_log_potential_against_mpmath(x):
+    """The reference at DPS digits with the end substitution of _log_potential_quad (the
+    same values as plain tanh-sinh at 60 digits, to 2e-20); the scale, the integral of
+    |psi log|x - t|| that the tolerance is relative to, as _abs_scale's."""
     sol = _solution()
-    a = sol.alpha
-    b = sol.beta
-    cf = [float(v) for v in sol.coefficients]
-
-    def psi(t):
-        return (1 - t) ** a * (1 + t) ** b * _mp_jacobi_series(cf, a, b, t)
-    pts = [-1, 1] if abs(x) >= 1 else [-1, x, 1]
-    ref = float(mp.quad(lambda t: psi(t) * mp.log(abs(x - t)), pts) / mp.pi)
-    scale = float(mp.quad(lambda t: abs(psi(t) * mp.log(abs(x - t))), pts) / mp.pi)
+    assert sol.beta < 0 < sol.alpha                 # the singular end is the left one
+    with mp.workdps(DPS):
+        ref = _log_potential_quad(sol, x)
+    with mp.workdps(SCALE_DPS):
+        scale = _log_potential_quad(sol, x, size=True, maxdegree=SCALE_DEGREE)
     assert abs(sol.log_potential(np.array([x]))[0] - ref) <= 1e-13 * scale
 
 
