@@ -22,6 +22,7 @@ Muskhelishvili, Singular Integral Equations (1953), ch. 10.
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 
@@ -432,7 +433,11 @@ def _as_interval_array(intervals):
 def _check_case_intervals(iv):
     """InvalidIntervalError unless every case's interval (c, d) of ``iv`` (shape (B, 1, 2))
     is finite with c < d."""
-    if (iv[:, 0, 0] < iv[:, 0, 1]).all() and np.isfinite(iv).all():
+    if iv.shape[0] == 1:                 # one case (a single solve): Python floats
+        c, d = iv[0, 0].tolist()
+        if c < d and math.isfinite(c) and math.isfinite(d):
+            return
+    elif (iv[:, 0, 0] < iv[:, 0, 1]).all() and np.isfinite(iv).all():
         return
     good = np.isfinite(iv).all(axis=(1, 2)) & (iv[:, 0, 0] < iv[:, 0, 1])
     k = int(np.flatnonzero(~good)[0])
@@ -451,6 +456,11 @@ def _case_coefficients(a, b, B):
     """a and b of a case axis as float arrays of length B (a scalar is shared), each pair
     checked (:func:`sie.exponents.check_coefficients`; numbers of a float array with
     |a/b| < 1e12, far from what double precision cannot resolve, at once)."""
+    if B == 1 and all(isinstance(v, np.ndarray) and v.dtype == float and v.size == 1
+                      for v in (a, b)):
+        av, bv = a.item(), b.item()      # one case (a single solve): Python floats
+        if abs(av) < 1e12 * abs(bv) < math.inf and bv != 0.0:
+            return np.array([av]), np.array([bv])
     if all(isinstance(v, float) or (isinstance(v, np.ndarray) and v.dtype == float
                                     and v.shape in ((B,), ())) for v in (a, b)):
         A, Bv = (np.full(B, v) if np.ndim(v) == 0 else np.array(v, dtype=float)
