@@ -330,6 +330,30 @@ def _panel_nodes(lo, hi, counts, at_left, at_right, lm, lp, ea, eb, ea1, eb1, ea
 
 
 # -- compiled sums over the rules ------------------------------------------------------------
+@jit(fastmath={"reassoc"})
+def _barycentric(u, s, lam, f, out):
+    """out[i] = the interpolant through (s_k, f_k) at u_i, barycentric weights ``lam``
+    (second form); f_k where u_i is s_k.  ``reassoc``: the sums in vector lanes (the order
+    of the sums changes)."""
+    for i in range(u.shape[0]):
+        num = 0.0
+        den = 0.0
+        for k in range(s.shape[0]):
+            c = lam[k] / (u[i] - s[k])
+            num += c * f[k]
+            den += c
+        value = num / den
+        if not math.isfinite(value):
+            # u_i is one of the points, or so close to one that lam / (u_i - s_k)
+            # overflows: the interpolant there is its value
+            best = 0
+            for k in range(s.shape[0]):
+                if abs(u[i] - s[k]) < abs(u[i] - s[best]):
+                    best = k
+            value = f[best]
+        out[i] = value
+
+
 @jit()
 def _nearest(nodes, x):
     """Distance from x to the nearest of the ascending ``nodes``."""
@@ -365,6 +389,266 @@ def _difference_quotient_sums(x, rx, nodes0, r0, weights0, nodes1, r1, weights1,
         out[i] = s
 
 
+_TREE_LEAF = 16       # nodes of a 1/w rule per leaf of its tree (at most)
+_TREE_THETA = 0.5     # a tree node is summed from its moments where radius < theta distance
+_TREE_GROUP = 32      # targets (consecutive, ascending) that walk the tree together
+_TREE_MIN = 256       # targets from which the tree pays for itself (fewer: term by term)
+
+
+def _series_limits(eps, theta):
+    """limits[p], p >= 1: the largest t with t^p (1 + t) / (1 - t) <= eps (bisection), up to
+    the first p whose limit reaches theta; limits[0] = 0."""
+    top = math.ceil((math.log(eps) - math.log((1.0 + theta) / (1.0 - theta))) / math.log(theta))
+    p = np.arange(1, top + 2, dtype=float)
+    lo, hi = np.zeros(p.size), np.ones(p.size)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        ok = mid ** p * (1.0 + mid) / (1.0 - mid) <= eps
+        lo, hi = np.where(ok, mid, lo), np.where(ok, hi, mid)
+    top = int(np.argmax(lo >= theta)) + 1
+    return np.concatenate([[0.0], lo[:top]])
+
+
+# a node's series is cut where what is left is below eps/8 of the terms' size
+_TREE_LIMITS = _series_limits(np.finfo(float).eps / 8.0, _TREE_THETA)
+
+
+@jit(fastmath={"reassoc"})
+def _rule_tree_sums(x, rx, order, nodes, r_nodes, weights, limits, out):
+    """out[i] = sum_j weights[j] (r_nodes[j] - rx[i]) / (nodes[j] - x[i]) for the targets
+    i = order[0], order[1], ... (ascending in x) over the ascending ``nodes`` of one rule,
+    by a treecode (Barnes & Hut, Nature 324 (1986) 446) on the source side.
+
+    The tree: index ranges of the nodes halved until a leaf holds at most _TREE_LEAF
+    (tree node k has children 2k+1, 2k+2); per tree node its centre c and half-width rho.
+    The targets walk it in groups of _TREE_GROUP consecutive ones.  A tree node with
+    rho < _TREE_THETA D, D the distance from c to the group's span, is summed from its
+    moments: with a_j = w_j r_j, b_j = w_j, s_j = (t_j - c) / rho and y = rho / (x - c),
+
+        sum_j (a_j - r(x) b_j) / (t_j - x) = -1/(x - c) sum_p (A_p - r(x) B_p) y^p,
+        A_p = sum_j a_j s_j^p,  B_p = sum_j b_j s_j^p,
+
+    cut after the first p terms where t^p (1 + t) / (1 - t) <= eps/8 (``limits``; t = rho/D
+    >= |y|): what is left is below eps/8 of sum_j (|a_j| + |r(x) b_j|) / |t_j - x|, the
+    size of the rounding of r_j - r(x) in the terms one by one, which the split form loses
+    no more than.  Such a node with no more nodes than terms, and every leaf nearer the
+    group, is summed term by term as in :func:`_difference_quotient_sums` (a node that
+    coincides with a target left out), over runs of adjacent leaves.  The moments are formed
+    for the nodes summed from them, as many as any group asks for; a group's series are
+    summed by Horner's rule across its targets (vector lanes).
+
+    ``reassoc`` lets the compiler sum in vector lanes: the results agree with the sums term
+    by term to rounding."""
+    n = nodes.shape[0]
+    nt = order.shape[0]
+    if nt == 0:
+        return
+    depth = 0
+    while (n + (1 << depth) - 1) >> depth > _TREE_LEAF:
+        depth += 1
+    count = (1 << (depth + 1)) - 1
+    start = np.empty(count, dtype=np.int64)
+    stop = np.empty(count, dtype=np.int64)
+    start[0] = 0
+    stop[0] = n
+    for k in range((1 << depth) - 1):
+        mid = (start[k] + stop[k]) // 2
+        start[2 * k + 1] = start[k]
+        stop[2 * k + 1] = mid
+        start[2 * k + 2] = mid
+        stop[2 * k + 2] = stop[k]
+    centre = np.zeros(count)
+    radius = np.zeros(count)
+    for k in range(count):
+        if stop[k] > start[k]:
+            centre[k] = 0.5 * (nodes[start[k]] + nodes[stop[k] - 1])
+            radius[k] = 0.5 * (nodes[stop[k] - 1] - nodes[start[k]])
+    # the walk of each group: the tree nodes summed from moments (with their term counts)
+    # and the runs of nodes summed term by term
+    group = _TREE_GROUP
+    ngroups = (nt + group - 1) // group
+    pmax = limits.shape[0] - 1
+    need = np.zeros(count, dtype=np.int64)
+    exp_node = np.empty(64, dtype=np.int64)
+    exp_p = np.empty(64, dtype=np.int64)
+    run_lo = np.empty(64, dtype=np.int64)
+    run_hi = np.empty(64, dtype=np.int64)
+    exp_first = np.empty(ngroups + 1, dtype=np.int64)
+    run_first = np.empty(ngroups + 1, dtype=np.int64)
+    stack = np.empty(2 * depth + 2, dtype=np.int64)
+    ne = 0
+    nr = 0
+    for gi in range(ngroups):
+        xmin = x[order[gi * group]]
+        xmax = x[order[min(nt, (gi + 1) * group) - 1]]
+        exp_first[gi] = ne
+        run_first[gi] = nr
+        stack[0] = 0
+        top = 1
+        while top > 0:
+            top -= 1
+            k = stack[top]
+            lo, hi = start[k], stop[k]
+            if hi <= lo:
+                continue
+            dist = max(xmin - centre[k], centre[k] - xmax)
+            if dist > 0.0 and radius[k] < _TREE_THETA * dist:
+                t = radius[k] / dist
+                last = min(pmax, hi - lo - 1)   # more terms than nodes: term by term
+                if last >= 1 and limits[last] >= t:
+                    a = 0
+                    p = last                    # the fewest terms whose limit covers t
+                    while p - a > 1:
+                        m = (a + p) >> 1
+                        if limits[m] >= t:
+                            p = m
+                        else:
+                            a = m
+                    if ne == exp_node.shape[0]:
+                        exp_node = np.concatenate((exp_node, np.empty(ne, dtype=np.int64)))
+                        exp_p = np.concatenate((exp_p, np.empty(ne, dtype=np.int64)))
+                    exp_node[ne] = k
+                    exp_p[ne] = p
+                    ne += 1
+                    need[k] = max(need[k], p)
+                    continue
+            elif 2 * k + 2 < count:
+                stack[top] = 2 * k + 2          # the left child on top: runs ascend
+                stack[top + 1] = 2 * k + 1
+                top += 2
+                continue
+            if nr > run_first[gi] and run_hi[nr - 1] == lo:
+                run_hi[nr - 1] = hi
+            else:
+                if nr == run_lo.shape[0]:
+                    run_lo = np.concatenate((run_lo, np.empty(nr, dtype=np.int64)))
+                    run_hi = np.concatenate((run_hi, np.empty(nr, dtype=np.int64)))
+                run_lo[nr] = lo
+                run_hi[nr] = hi
+                nr += 1
+    exp_first[ngroups] = ne
+    run_first[ngroups] = nr
+    # the moments (slices: loops from 0, which the compiler vectorizes)
+    terms = 1
+    for k in range(count):
+        terms = max(terms, need[k])
+    ma = np.empty((count, terms))
+    mb = np.empty((count, terms))
+    pw = np.empty(n)
+    sv = np.empty(n)
+    for k in range(count):
+        if need[k] == 0:
+            continue
+        lo, hi = start[k], stop[k]
+        c = centre[k]
+        scale = 1.0 / radius[k] if radius[k] > 0.0 else 0.0
+        pk, sk, tk, rk = pw[lo:hi], sv[lo:hi], nodes[lo:hi], r_nodes[lo:hi]
+        pk[:] = weights[lo:hi]
+        for j in range(sk.shape[0]):
+            sk[j] = (tk[j] - c) * scale
+        for p in range(need[k]):
+            sa = 0.0
+            sb = 0.0
+            for j in range(pk.shape[0]):
+                sa += pk[j] * rk[j]
+                sb += pk[j]
+                pk[j] *= sk[j]
+            ma[k, p] = sa
+            mb[k, p] = sb
+    # the sums
+    xs = np.empty(group)
+    rs = np.empty(group)
+    inv = np.empty(group)
+    y = np.empty(group)
+    acc = np.empty(group)
+    tot = np.empty(group)
+    for gi in range(ngroups):
+        g0 = gi * group
+        g = min(nt, g0 + group) - g0
+        xg, rg, ig, yg, ag, tg = xs[:g], rs[:g], inv[:g], y[:g], acc[:g], tot[:g]
+        for i in range(g):
+            xg[i] = x[order[g0 + i]]
+            rg[i] = rx[order[g0 + i]]
+            tg[i] = 0.0
+        for e in range(exp_first[gi], exp_first[gi + 1]):
+            k = exp_node[e]
+            p = exp_p[e]
+            c = centre[k]
+            rho = radius[k]
+            a0 = ma[k, p - 1]
+            b0 = mb[k, p - 1]
+            for i in range(g):
+                ig[i] = 1.0 / (xg[i] - c)
+                yg[i] = rho * ig[i]
+                ag[i] = a0 - rg[i] * b0
+            for q in range(p - 2, -1, -1):
+                aq = ma[k, q]
+                bq = mb[k, q]
+                for i in range(g):
+                    ag[i] = ag[i] * yg[i] + (aq - rg[i] * bq)
+            for i in range(g):
+                tg[i] -= ig[i] * ag[i]
+        for i in range(g):
+            xi = xg[i]
+            ri = rg[i]
+            sm = 0.0
+            for e in range(run_first[gi], run_first[gi + 1]):
+                tk = nodes[run_lo[e]:run_hi[e]]
+                rk = r_nodes[run_lo[e]:run_hi[e]]
+                wk = weights[run_lo[e]:run_hi[e]]
+                for j in range(tk.shape[0]):
+                    den = tk[j] - xi
+                    term = (rk[j] - ri) / den if den != 0.0 else 0.0
+                    sm += wk[j] * term
+            out[order[g0 + i]] = tg[i] + sm
+
+
+@jit()
+def _nearest_sorted(nodes, xs, out):
+    """out[i] = the distance from xs[i] to the nearest of the ascending ``nodes``, for
+    ascending xs (one merge-like pass)."""
+    j = 0
+    last = nodes.shape[0] - 1
+    for i in range(xs.shape[0]):
+        while j < last and nodes[j + 1] <= xs[i]:
+            j += 1
+        d = abs(xs[i] - nodes[j])
+        if j < last:
+            d = min(d, abs(nodes[j + 1] - xs[i]))
+        out[i] = d
+
+
+@jit()
+def _tree_quotient_sums(x, rx, nodes0, r0, weights0, nodes1, r1, weights1, limits, out):
+    """:func:`_difference_quotient_sums` by the treecode :func:`_rule_tree_sums`: each x[i]
+    takes the rule whose nearest node is farther, and the targets of each rule are summed in
+    ascending order."""
+    n = x.shape[0]
+    order = np.argsort(x, kind="mergesort")
+    xs = x[order]
+    d0 = np.empty(n)
+    d1 = np.empty(n)
+    _nearest_sorted(nodes0, xs, d0)
+    _nearest_sorted(nodes1, xs, d1)
+    n1 = 0
+    for i in range(n):
+        if d1[i] > d0[i]:
+            n1 += 1
+    order0 = np.empty(n - n1, dtype=np.int64)
+    order1 = np.empty(n1, dtype=np.int64)
+    a = 0
+    b = 0
+    for i in range(n):
+        if d1[i] > d0[i]:
+            order1[b] = order[i]
+            b += 1
+        else:
+            order0[a] = order[i]
+            a += 1
+    _rule_tree_sums(x, rx, order0, nodes0, r0, weights0, limits, out)
+    _rule_tree_sums(x, rx, order1, nodes1, r1, weights1, limits, out)
+
+
 _LOG_SPAN = 2.0       # a cluster holds offsets e in [e0, 2 e0]: radius / centre <= 1/3
 _LOG_TERMS = 40       # expansion terms at most: (1/3)^41 / 41 < 1e-21
 _LOG_TOL = 1e-19      # truncation of the expansion, relative to sum |c_j| of the cluster
@@ -389,15 +673,35 @@ def _cluster_starts(e):
     return starts[:k + 1].copy()
 
 
+_LOG_EXACT = 4        # moments p < _LOG_EXACT summed compensated (module below)
+
+
+@jit(fastmath={"reassoc"})
+def _power_sums(pw, s, first, out):
+    """out[p] = sum_j pw_j s_j^(p - first) / p for p = first .. out.size - 1 (p >= 1);
+    ``pw`` is overwritten.  ``reassoc`` lets the compiler sum in vector lanes (the order of
+    the sums changes)."""
+    for p in range(first, out.shape[0]):
+        acc = 0.0
+        for j in range(pw.shape[0]):
+            acc += pw[j]
+            pw[j] *= s[j]
+        out[p] = acc / p
+
+
 @jit()
 def _log_moments(e, c, starts, centers, radii, terms, moments):
     """Per cluster k (offsets e[starts[k]:starts[k+1]]): centre m_k and radius rho_k of its
     offsets, moments[k, 0] = sum c_j and moments[k, p] = sum c_j s_j^p / p (p >= 1,
     s_j = (e_j - m_k) / rho_k in [-1, 1]: scaled, no underflow for a cluster 1e-14 wide).
 
-    Each sum is compensated (Neumaier): a cluster holds up to ~1000 nodes, whose plain sum
-    loses ~sqrt(1000) ulps (4e-15 of M_0, against 1e-16 compensated)."""
-    comp = np.empty(moments.shape[1])
+    A cluster holds up to ~1000 nodes, whose plain sum loses ~sqrt(1000) ulps (4e-15 of
+    M_0); the moments p < _LOG_EXACT are compensated (Neumaier: 1e-16).  The others enter
+    the sums of :func:`_log_sums` times r^p <= 3^-p, which leaves their rounding below 0.1
+    ulp of sum |c_j|: plain sums in vector lanes (:func:`_power_sums`)."""
+    comp = np.empty(_LOG_EXACT)
+    pws = np.empty(e.shape[0])
+    ss = np.empty(e.shape[0])
     for k in range(starts.shape[0] - 1):
         lo, hi = starts[k], starts[k + 1]
         m = 0.5 * (e[lo] + e[hi - 1])
@@ -415,13 +719,16 @@ def _log_moments(e, c, starts, centers, radii, terms, moments):
         scale = 1.0 / rho if rho > 0.0 else 0.0
         for p in range(moments.shape[1]):
             moments[k, p] = 0.0
-            comp[p] = 0.0
         if hi - lo <= _LOG_DIRECT:
             continue                        # summed term by term
+        top = min(terms[k] + 1, _LOG_EXACT)
+        for p in range(top):
+            comp[p] = 0.0
         for j in range(lo, hi):
             sj = (e[j] - m) * scale
+            ss[j] = sj
             pw = c[j]
-            for p in range(terms[k] + 1):
+            for p in range(top):
                 if p > 0:
                     pw *= sj
                 x = pw / p if p > 0 else pw
@@ -431,8 +738,11 @@ def _log_moments(e, c, starts, centers, radii, terms, moments):
                 else:
                     comp[p] += (x - t) + moments[k, p]
                 moments[k, p] = t
-        for p in range(terms[k] + 1):
+            pws[j] = pw * sj
+        for p in range(top):
             moments[k, p] += comp[p]
+        if terms[k] >= top:
+            _power_sums(pws[lo:hi], ss[lo:hi], top, moments[k, :terms[k] + 1])
 
 
 @jit()
@@ -629,9 +939,12 @@ class InversionRemainder:
         rx = self._r(x, fx)
         sums = np.empty(x.size)
         (n0, w0, r0), (n1, w1, r1) = self.rules
-        _difference_quotient_sums(np.ascontiguousarray(x.ravel()),
-                                  np.ascontiguousarray(rx.ravel()), n0, r0, w0, n1, r1, w1,
-                                  sums)
+        args = (np.ascontiguousarray(x.ravel()), np.ascontiguousarray(rx.ravel()),
+                n0, r0, w0, n1, r1, w1)
+        if x.size >= _TREE_MIN:
+            _tree_quotient_sums(*args, _TREE_LIMITS, sums)
+        else:
+            _difference_quotient_sums(*args, sums)
         integral = sums.reshape(x.shape) / math.pi
         k = sol.kappa
         if k == 1:
@@ -676,12 +989,60 @@ class InversionRemainder:
 
     # -- Cauchy transform off the open interval ---------------------------------------
     def _w_values(self):
-        """w_rule weights times delta_phi at its nodes (computed once)."""
+        """w_rule weights times delta_phi at its nodes (computed once; with delta_phi at -1
+        and +1, :meth:`_phi_at_w_nodes`)."""
         if self._wphi is None:
             tw, ww = self.w_rule
-            self._phi_w = self.phi(tw)
+            self._phi_w, self._phi_ends = self._phi_at_w_nodes()
             self._wphi = ww * self._phi_w
         return self._wphi
+
+    def _phi_at_w_nodes(self):
+        """delta_phi at the nodes of ``w_rule`` and at -1, +1.
+
+        ``w_rule`` is graded toward the ends for the transforms of w delta_phi just beyond
+        them, not for delta_phi itself: on the end pieces of the mesh of the 1/w rules,
+        [-1, p_1] and [p_K, 1] (p_1 the midpoint between -1 and the first break), delta_phi
+        is analytic (its singularities are the breaks: I(x) is regular wherever r is
+        analytic), in the Bernstein ellipse through the nearest break, rho = 3 + sqrt(8)
+        (the break lies one piece length beyond).  There it is interpolated (barycentric
+        form, Berrut & Trefethen, SIAM Rev. 46 (2004) 501) from m Chebyshev points with
+        m log(rho) >= _FAR_EXPONENT and m >= q (the projection's polynomial part, of
+        degree < q, is then interpolated exactly): ~rho^-m < 1e-17 of delta_phi there, at
+        m points instead of the ~10 graded pieces' nodes.  The Chebyshev points include the
+        end itself.  Elsewhere delta_phi at the nodes."""
+        tw, _ = self.w_rule
+        piece, om, op = self.w_ends
+        lo_w, hi_w, _ = self.w_panels
+        pts = self._w_mesh
+        m = max(int(self.q), math.ceil(_FAR_EXPONENT / math.log(3.0 + math.sqrt(8.0))))
+        ends = []                       # (node indices, their offsets from the end, length)
+        if pts.size:
+            for side, edge in ((-1, pts[0]), (1, pts[-1])):
+                inside = (hi_w <= edge) if side < 0 else (lo_w >= edge)
+                sel = np.flatnonzero(inside[piece])
+                length = (1.0 + edge) if side < 0 else (1.0 - edge)
+                if sel.size > m and length > 0.0:
+                    ends.append((side, sel, (op if side < 0 else om)[sel], length))
+        # Chebyshev points of the second kind as offsets from the end: L sin^2(theta/2),
+        # theta = pi k / (m - 1) (exact at the end itself, no cancellation next to it)
+        s = np.sin(0.5 * np.pi * np.arange(m) / (m - 1)) ** 2
+        direct = np.ones(tw.size, dtype=bool)
+        x = []
+        for side, sel, _, length in ends:
+            direct[sel] = False
+            x.append(side * (1.0 - length * s))
+        ends_at = [np.array([-1.0, 1.0])]
+        values = self.phi(np.concatenate(x + [tw[direct]] + ends_at))
+        out = np.empty(tw.size)
+        out[direct] = values[m * len(ends):-2]
+        lam = (-1.0) ** np.arange(m)
+        lam[[0, -1]] *= 0.5
+        for i, (side, sel, offset, length) in enumerate(ends):
+            part = np.empty(sel.size)
+            _barycentric(offset / length, s, lam, values[i * m:(i + 1) * m], part)
+            out[sel] = part
+        return out, values[-2:]
 
     def _log_clusters(self, side):
         """What :func:`_log_sums` needs for points beyond the end ``side`` (+1 or -1), built
@@ -694,13 +1055,18 @@ class InversionRemainder:
             _, ww = self.w_rule
             _, om, op = self.w_ends
             self._w_values()
-            if self._phi_ends is None:
-                self._phi_ends = self.phi(np.array([-1.0, 1.0]))
             pe = float(self._phi_ends[(side + 1) // 2])
             offsets = om if side == 1 else op
-            order = np.argsort(offsets, kind="stable")
-            e = np.ascontiguousarray(offsets[order])
-            c = np.ascontiguousarray((ww * (self._phi_w - pe))[order])
+            c = ww * (self._phi_w - pe)
+            # the nodes ascend, so their offsets from an end are monotonic but where two
+            # pieces' nodes round alike
+            if np.all(offsets[1:] < offsets[:-1]):
+                e, c = offsets[::-1].copy(), c[::-1].copy()
+            elif not np.all(offsets[1:] > offsets[:-1]):
+                order = np.argsort(offsets, kind="stable")
+                e, c = np.ascontiguousarray(offsets[order]), np.ascontiguousarray(c[order])
+            else:
+                e = offsets
             starts = _cluster_starts(e)
             k = starts.size - 1
             centers, radii = np.empty(k), np.empty(k)
