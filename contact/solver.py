@@ -259,6 +259,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
     cases, out = [], [None] * count
     shared = {}
     material_ok = False
+    layered = getattr(material, "surface_kernel", None) is not None
     for i, (Pi, Vi, Mi, Di) in enumerate(zip(P.ravel().tolist(), V.ravel().tolist(),
                                              M.ravel().tolist(), D.ravel().tolist())):
         try:
@@ -272,7 +273,9 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 const = shared.get(key)
                 if const is None:
                     const = shared[key] = surface_constants(material, Vi)
-            problem = _problem(material, punch, Vi, Mi, Di, const)
+            mu_f = _signed_friction(const, Mi, Di)
+            problem = _Problem(material, punch, const, const.c, Mi, Di, mu_f,
+                               contact_kernel(material, const.c, mu_f) if layered else None)
             if method == "closed_form":
                 out[i] = _closed_form_result(problem, Pi)
                 continue

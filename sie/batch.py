@@ -403,17 +403,18 @@ class SolutionBatch:
         cons = None if self.consistency is None else float(self.consistency[i])
         c0, d0 = self.intervals[i].tolist()
         piece = IntervalSolution(Interval(c0, d0), self.exponents[i], self.n, c, cons, None,
-                                 self._end_rhs(np.array([c0, d0])))
+                                 self._end_rhs(c0, d0))
         return Solution((piece,), float(self.a[i]), float(self.b[i]), True, None)
 
-    def _end_rhs(self, x):
-        """(f, abs(f)) at the points ``x`` on call (None without f): the right-hand side at
+    def _end_rhs(self, c, d):
+        """(f, abs(f)) at the ends c, d on call (None without f): the right-hand side at
         the ends, as :attr:`sie.IntervalSolution.end_rhs`."""
         f = self.f
         if f is None:
             return None
 
         def end_rhs():
+            x = np.array([c, d])
             g = call_checked(f, "f", (x,), x.shape)
             return g, np.abs(g)
         return end_rhs
