@@ -3,6 +3,7 @@ docs`` executes it), every public name has its API page, and the examples in the
 from __future__ import annotations
 
 import doctest
+import importlib.util
 import inspect
 import py_compile
 import shutil
@@ -21,18 +22,37 @@ sys.path.insert(0, str(DOCS))
 from check_links import broken_links  # noqa: E402  (docs/check_links.py, also run by make docs)
 
 
-@pytest.fixture(scope="module")
-def built(tmp_path_factory):
-    """The site built from a copy of docs/ (the build writes generated pages beside its
-    sources), with the gallery's scripts listed but not run."""
-    pytest.importorskip("sphinx")
-    src = tmp_path_factory.mktemp("docs") / "docs"
+def _build_site(root):
+    """The site built from a copy of docs/ below ``root`` (the build writes generated pages
+    beside its sources), with the gallery's scripts listed but not run: (the html folder,
+    the finished Sphinx process)."""
+    src = root / "docs"
     shutil.copytree(DOCS, src, ignore=shutil.ignore_patterns("_build", "auto_examples",
                                                             "generated"))
     out = src / "_build" / "html"
     proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b",
                            "html", "-D", "plot_gallery=0", str(src), str(out)],
                           capture_output=True, text=True)
+    return out, proc
+
+
+#: the fixture ``built`` is what tests/conftest.py starts early (the build, ~30 s, runs while
+#: the tests before these run)
+BACKGROUND_FOR = ("built",)
+_STARTED = {}
+
+
+def start_in_background(background):
+    if importlib.util.find_spec("sphinx") is not None:
+        _STARTED["site"] = background.submit(_build_site, background.mkdtemp("docs"))
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    """The strict build of the site (warnings are errors): its html folder."""
+    pytest.importorskip("sphinx")
+    started = _STARTED.pop("site", None)
+    out, proc = started.result() if started else _build_site(tmp_path_factory.mktemp("docs"))
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-6000:]
     return out
 

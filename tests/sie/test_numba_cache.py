@@ -16,10 +16,11 @@ bit with a reference run that compiled into an empty, writable cache:
       data (.nbc) files are garbage (a process killed while writing).
 Each subprocess that finds no usable cache compiles the kernels of the package
 (~5-10 s).  The runs of all cases are independent interpreters, so they run two at
-a time, started together by the module fixture ``runs`` (the suite itself runs on
-one core); each test then judges its own case's runs.  The "first run" of the
-corrupt-cache cases is a copy of the reference run's cache (the files a first run
-writes), not a compilation of its own.
+a time, all started by the module fixture ``runs`` -- or, in a session that selects
+these tests, by tests/conftest.py as soon as collection ends, while the tests before
+these run (the suite itself runs on one core) -- and each test then judges its own
+case's runs.  The "first run" of the corrupt-cache cases is a copy of the reference
+run's cache (the files a first run writes), not a compilation of its own.
 """
 from __future__ import annotations
 
@@ -191,23 +192,46 @@ class _Runs:
         return self._futures[name].result()
 
 
+def _start(submit, mkdtemp):
+    """Every case submitted (``submit(fn, *args)`` -> a future), each in a directory of its
+    own (``mkdtemp(name)``): the reference first, the cases that copy its cache last."""
+    futures = {}
+
+    def start(name, fn, *args):
+        futures[name] = submit(fn, mkdtemp(f"numba_{name}"), *args)
+    start("reference", case_reference)
+    start("module_changed", case_module_changed)
+    start("cache_off", case_cache_off)
+    start("no_writable_location", case_no_writable_location)
+    start("unwritable", case_unwritable)
+    start("corrupt_files", case_corrupt_files, futures["reference"])
+    start("corrupt_data_only", case_corrupt_data_only, futures["reference"])
+    return futures
+
+
+#: the fixture ``runs`` is what tests/conftest.py starts early (the interpreters, ~80 s of
+#: one core, run while the tests before these run)
+BACKGROUND_FOR = ("runs",)
+_STARTED = {}
+
+
+def start_in_background(background):
+    _STARTED.update(_start(background.submit, background.mkdtemp))
+
+
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
-    """Every case started at once, two interpreters at a time (one where one core is
-    usable): the reference first, the cases that copy its cache last."""
+    """Every case's runs: those started in the background by tests/conftest.py, or started
+    here, two interpreters at a time (one where one core is usable)."""
+    if _STARTED:
+        futures = dict(_STARTED)
+        _STARTED.clear()
+        yield _Runs(futures)
+        return
     workers = max(1, min(2, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity")
                          else os.cpu_count() or 1))
     with ThreadPoolExecutor(workers) as pool:
-        def start(name, fn, *args):
-            futures[name] = pool.submit(fn, tmp_path_factory.mktemp(f"numba_{name}"), *args)
-        futures = {}
-        start("reference", case_reference)
-        start("module_changed", case_module_changed)
-        start("cache_off", case_cache_off)
-        start("no_writable_location", case_no_writable_location)
-        start("unwritable", case_unwritable)
-        start("corrupt_files", case_corrupt_files, futures["reference"])
-        start("corrupt_data_only", case_corrupt_data_only, futures["reference"])
+        futures = _start(pool.submit, tmp_path_factory.mktemp)
         yield _Runs(futures)
         for future in futures.values():     # a test that failed early: its cases still end
             future.cancel()
