@@ -38,7 +38,7 @@ The Stroh matrix of the moving half-space
 In the frame moving with the load, u(X, Y) = u_hat(Y) exp(i k X) obeys
 sigma_ij,j = rho V^2 u_i,XX.  With Q_ik = C_iXkX, R_ik = C_iXkY, T_ik = C_iYkY (Stroh 1962;
 Ting 1996, ch. 5) and the state eta = (u_hat, t_hat / (i k)), t_i = sigma_iY the traction on
-Y = const,
+Y = const::
 
     d eta / dY = i k N eta,
     N = [[N1, N2], [N3, N1^T]],   N1 = -T^-1 R^T,  N2 = T^-1,  N3 = R T^-1 R^T - Q + rho V^2 I,
@@ -57,21 +57,21 @@ S <- (mu S - (mu S)^-1) / 2 from S = N (Higham 2008, ch. 5, the Newton iteration
 matrix sign function, written for i N in real arithmetic).  It never forms eigenvectors nor
 divides by differences of eigenvalues, and converges for repeated and defective eigenvalues
 alike (the isotropic material at rest, where p = +-i are triple and N is not diagonalisable),
-at a rate set by the distance of the eigenvalues from the real axis only.  S_hat is, up to
-its sign, the matrix (1/pi) int_0^pi N(theta) d theta of the integral formalism of Barnett &
-Lothe (Ting 1996, ch. 7; Barnett & Lothe 1985 for the moving half-space), whose lower left
-block is minus the Barnett-Lothe tensor L.
+at a rate set by the distance of the eigenvalues from the real axis only.  S_hat is the
+matrix (1/pi) int_0^pi N(theta) d theta of the integral formalism of Barnett & Lothe (Ting
+1996, ch. 7; Barnett & Lothe 1985 for the moving half-space), whose lower left block is minus
+the Barnett-Lothe tensor L_BL.
 
 On the decaying subspace (k > 0) S_hat eta = -i eta.  Written in blocks
 S_hat = [[S1, S2], [S3, S4]], its second row gives S3 u_hat = -(S4 + i I) t_hat / (i k), so
-with du/dX = i k u, t = -s and the multiplier +i sgn(k) of Hc,
+with du/dX = i k u, t = -s and the multiplier +i sgn(k) of Hc::
 
     L = S3^-1 S4,        M = S3^-1.
 
-M is symmetric (reciprocity) and L antisymmetric (Ting 1996, ch. 7: L S and H S^T are
-antisymmetric); for the isotropic material at rest L_YX = (1 - 2 nu) / (2G),
-M_YY = -(1 - nu) / G.  The stresses on the surface follow from the stress-strain law with
-u_,Y = T^-1 (t - R^T u_,X):
+M = -L_BL^-1 is symmetric (reciprocity) and L antisymmetric (L_BL S_BL is antisymmetric:
+Ting 1996, ch. 7, the identities of the Barnett-Lothe tensors); for the isotropic material
+at rest L_YX = (1 - 2 nu) / (2G), M_YY = -(1 - nu) / G.  The stresses on the surface follow
+from the stress-strain law with u_,Y = T^-1 (t - R^T u_,X)::
 
     sigma_ij = (C_ijkX - C_ijmY (T^-1 R^T)_mk) u_k,X + C_ijmY T^-1_mk t_k.
 
@@ -80,23 +80,23 @@ The Rayleigh speed and the limiting speed
 The limiting speed c_L is the lowest speed at which some p becomes real (a bulk wave whose
 slowness projects onto 1/V along X):
 rho V_L^2 = min over real p of the smallest eigenvalue of Q + p (R + R^T) + p^2 T
-(Barnett & Lothe 1985; Ting 1996, ch. 12).  Below it the symmetric matrix -S3 (the
-Barnett-Lothe L of the moving half-space) is positive definite at c = 0 and its eigenvalues
+(Barnett & Lothe 1985; Ting 1996, ch. 12).  Below it the symmetric matrix L_BL = -S3 (the
+Barnett-Lothe tensor of the moving half-space) is positive definite at c = 0 and its eigenvalues
 decrease with c (Barnett & Lothe 1985); the Rayleigh speed c_R is the first zero of its
 smallest eigenvalue (the surface impedance becomes singular: a free surface wave), found by
 bisection; where it stays positive up to c_L (an exceptional limiting wave, e.g. a decoupled
-shear wave along Z that is itself traction free) c_R = c_L.
+shear wave polarised along Z that is itself traction free) c_R = c_L.
 
 References
 ----------
-A. N. Stroh, "Steady state problems in anisotropic elasticity", J. Math. Phys. 41 (1962)
+Stroh, A. N., "Steady state problems in anisotropic elasticity", J. Math. Phys. 41 (1962)
 77-103.
-T. C. T. Ting, Anisotropic Elasticity: Theory and Applications, Oxford University Press (1996):
+Ting, T. C. T., Anisotropic Elasticity: Theory and Applications, Oxford University Press (1996):
 the Stroh formalism (ch. 5), the Barnett-Lothe tensors and the integral formalism (ch. 7),
 steady motion and surface waves (ch. 12).
-D. M. Barnett & J. Lothe, "Free surface (Rayleigh) waves in anisotropic elastic half-spaces:
+Barnett, D. M. & Lothe, J., "Free surface (Rayleigh) waves in anisotropic elastic half-spaces:
 the surface impedance method", Proc. R. Soc. Lond. A 402 (1985) 135-152.
-N. J. Higham, Functions of Matrices: Theory and Computation, SIAM (2008), ch. 5 (the matrix
+Higham, N. J., Functions of Matrices: Theory and Computation, SIAM (2008), ch. 5 (the matrix
 sign function, the scaled Newton iteration).
 """
 from __future__ import annotations
@@ -117,7 +117,6 @@ __all__ = ["Anisotropic", "SurfaceResponse", "PressureCoefficients", "VOIGT",
 VOIGT = ((0, 0), (1, 1), (2, 2), (1, 2), (2, 0), (0, 1))
 #: _PAIR[i, j]: the Voigt index of the pair (i, j).
 _PAIR = np.array([[0, 5, 4], [5, 1, 3], [4, 3, 2]])
-_TRACTIONS = ("q", "p", "r")
 
 #: Relative asymmetry |C - C^T| / max|C| accepted (rounding) and removed by symmetrising.
 SYMMETRY_TOLERANCE = 1e-12
@@ -195,7 +194,8 @@ class SurfaceResponse:
     References
     ----------
     Stroh, J. Math. Phys. 41 (1962) 77-103; Ting, Anisotropic Elasticity (1996), ch. 5, 7 and
-    12; Barnett & Lothe, Proc. R. Soc. Lond. A 402 (1985) 135-152.  See :mod:`contact.anisotropic`.
+    12; Barnett & Lothe, Proc. R. Soc. Lond. A 402 (1985) 135-152; the derivation in
+    :mod:`contact.anisotropic`.
     """
 
     c: float
@@ -357,8 +357,8 @@ class Anisotropic:
         C13, C23, C33, C44, C55 : float
             The out-of-plane stiffnesses, Voigt numbering: C13 = C_XXZZ, C23 = C_YYZZ,
             C33 = C_ZZZZ, C44 = C_YZYZ, C55 = C_ZXZX.  They leave the in-plane response of
-            the aligned material unchanged; C44 and C55 set the shear wave along Z, which
-            bounds the limiting speed (c^2 <= C55 / C66).
+            the aligned material unchanged; C55 sets the speed of the shear wave along X
+            polarised along Z, which bounds the limiting speed: c_L^2 <= C55 / C66.
         rho : float or None, optional
             The density; by default the material's.
 
@@ -402,7 +402,7 @@ class Anisotropic:
         The compliance (Voigt order, strains from stresses) has S_ii = 1 / E_i,
         S_ij = -nu_ij / E_i (nu_ij: the contraction along j under a stress along i, so that
         nu_ij / E_i = nu_ji / E_j), S44 = 1 / G23, S55 = 1 / G13, S66 = 1 / G12, and
-        C = S^-1 (Ting 1996, ch. 1; Lekhnitskii's convention for nu_ij).  Rotate the result
+        C = S^-1 (Lekhnitskii's convention for nu_ij).  Rotate the result
         (:meth:`rotated`) for material axes off the frame.
 
         Parameters
@@ -459,7 +459,7 @@ class Anisotropic:
         """The material rotated actively: its direction e becomes R e.
 
         C'_ijkl = R_ia R_jb R_kc R_ld C_abcd (scipy's convention: R maps the material's axes
-        to the frame's; Ting 1996, ch. 2).  The density is kept.
+        to the frame's).  The density is kept.
 
         Parameters
         ----------
@@ -542,11 +542,11 @@ class Anisotropic:
 
     def rayleigh_speed(self) -> float:
         """Relative Rayleigh speed c_R: the first zero, below the limiting speed, of the
-        smallest eigenvalue of the Barnett-Lothe tensor L(c) = -S3 (the surface impedance
+        smallest eigenvalue of the Barnett-Lothe tensor L_BL(c) = -S3 (the surface impedance
         singular: a free surface wave); c_L where there is none (memoised).
 
-        Bisection to about one ulp: the eigenvalues of L(c) decrease with c (Barnett &
-        Lothe 1985), L(0) is positive definite.
+        Bisection to about one ulp: the eigenvalues of L_BL(c) decrease with c (Barnett &
+        Lothe 1985), L_BL(0) is positive definite.
 
         Returns
         -------
@@ -577,7 +577,7 @@ class Anisotropic:
         return self._cache["c_R"]
 
     def _rayleigh_eigenvalue(self, c: float) -> float:
-        """The smallest eigenvalue of L(c) = -S3 (normalised by C66); -inf where the
+        """The smallest eigenvalue of L_BL(c) = -S3 (normalised by C66); -inf where the
         sign iteration does not converge (within rounding of the limiting speed)."""
         S, converged = _sign_matrix(_stroh_matrix(*self._blocks, c * c))
         return _impedance_eigenvalue(S) if converged else -math.inf
@@ -694,9 +694,6 @@ def _label(a: int, b: int) -> str:
 
 def _check_stiffness(C) -> np.ndarray:
     """C as a fresh symmetric float (6, 6) array, or MaterialError saying what is wrong."""
-    if isinstance(C, (str, bytes)) or np.iscomplexobj(C):
-        raise MaterialError(f"stiffness C must be a 6x6 matrix of finite real numbers (Voigt "
-                            f"order XX, YY, ZZ, YZ, ZX, XY), got {C!r}")
     arr = real_array("stiffness C", C, MaterialError, "a 6x6 matrix of real numbers (Voigt "
                      "order XX, YY, ZZ, YZ, ZX, XY)")
     if arr.shape != (6, 6):
@@ -705,25 +702,26 @@ def _check_stiffness(C) -> np.ndarray:
     bad = np.argwhere(~np.isfinite(arr))
     if bad.size:
         a, b = bad[0]
-        raise MaterialError(f"stiffness C must be finite, got {arr[a, b]!r} at {_label(a, b)} "
-                            f"({len(bad)} entries not finite)")
+        raise MaterialError(f"stiffness C must be finite, got {float(arr[a, b])!r} at "
+                            f"{_label(a, b)} ({len(bad)} entries not finite)")
     arr = np.array(arr, dtype=float)
     scale = np.abs(arr).max()
     asym = np.abs(arr - arr.T)
     if asym.max() > SYMMETRY_TOLERANCE * scale:
         a, b = np.unravel_index(np.argmax(asym), asym.shape)
         raise MaterialError(
-            f"stiffness C must be symmetric, got {_label(a, b)} = {arr[a, b]!r} but "
-            f"{_label(b, a)} = {arr[b, a]!r} (allowed: C[i, j] = C[j, i], to "
-            f"{SYMMETRY_TOLERANCE:g} of max|C| = {scale!r})")
+            f"stiffness C must be symmetric, got {_label(a, b)} = {float(arr[a, b])!r} but "
+            f"{_label(b, a)} = {float(arr[b, a])!r} (allowed: C[i, j] = C[j, i], to "
+            f"{SYMMETRY_TOLERANCE:g} of max|C| = {float(scale)!r})")
     arr = 0.5 * (arr + arr.T)
     w, v = np.linalg.eigh(arr)
     if not w[0] > DEFINITENESS_TOLERANCE * max(w[-1], 0.0):
         vec = np.round(v[:, 0] / np.abs(v[:, 0]).max(), 6)
         raise MaterialError(
             f"stiffness C must be positive definite (positive strain energy for every "
-            f"strain), got smallest eigenvalue {w[0]!r} (largest {w[-1]!r}; strain of zero "
-            f"or negative energy, Voigt XX..XY: {vec.tolist()}); allowed: every eigenvalue > "
+            f"strain), got smallest eigenvalue {float(w[0])!r} (largest {float(w[-1])!r}; "
+            f"strain of zero or negative energy, Voigt XX..XY: {vec.tolist()}); allowed: "
+            f"every eigenvalue > "
             f"{DEFINITENESS_TOLERANCE:g} x the largest")
     return arr
 
@@ -736,9 +734,6 @@ def _check_rotation(rotation) -> np.ndarray:
             raise MaterialError(f"rotation must be a single rotation, got a "
                                 f"{type(rotation).__name__} of {len(R)} rotations")
     else:
-        if isinstance(rotation, (str, bytes)) or np.iscomplexobj(rotation):
-            raise MaterialError(f"rotation must be a 3x3 rotation matrix or a "
-                                f"scipy.spatial.transform.Rotation, got {rotation!r}")
         R = real_array("rotation", rotation, MaterialError,
                        "a 3x3 rotation matrix or a scipy.spatial.transform.Rotation")
         if R.shape != (3, 3):
@@ -809,7 +804,7 @@ def _sign_matrix(N) -> tuple[np.ndarray, bool]:
 
 
 def _impedance_eigenvalue(S) -> float:
-    """The smallest eigenvalue of -S3 (the Barnett-Lothe L, symmetric)."""
+    """The smallest eigenvalue of -S3 (the Barnett-Lothe tensor L_BL, symmetric)."""
     L = -S[3:, :3]
     return float(np.linalg.eigvalsh(0.5 * (L + L.T))[0])
 
