@@ -77,6 +77,22 @@ def outside(zones, X):
     return ~inside
 
 
+_FEW_STRETCHES = 8      # Face._rises lists the parts of this many stretches in Python
+
+
+def _sorted_unique(v):
+    """np.unique(v, return_inverse=True) for a 1-d float array without NaN: the ascending
+    distinct values and where each v lies among them (one stable sort)."""
+    order = np.argsort(v, kind="stable")
+    s = v[order]
+    new = np.empty(s.size, dtype=bool)
+    new[:1] = True
+    np.not_equal(s[1:], s[:-1], out=new[1:])
+    inv = np.empty(v.size, dtype=np.intp)
+    inv[order] = np.cumsum(new) - 1
+    return s[new], inv
+
+
 def _end_between(breaks, a, b, default):
     inside = [x for x in breaks if a <= x <= b]
     return inside[0] if inside else default
@@ -143,6 +159,8 @@ class Face:
         lo_w, hi_w = self.search_window()
         unit = (hi_w - lo_w) / 64.0
         a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        if a.size <= _FEW_STRETCHES:
+            return self._few_rises(a, b, unit)
         # the pieces: stretch i runs over [a_i, breaks inside it..., b_i]
         br = np.array(self.breaks) if self.breaks else np.zeros(1)
         first = np.searchsorted(br, a, side="right") if self.breaks else np.zeros(a.size, int)
@@ -165,13 +183,34 @@ class Face:
         part = (0.5 * lengths) * (self.slope(X) @ w)
         return np.bincount(stretch[piece], weights=part, minlength=a.size)
 
+    def _few_rises(self, a, b, unit):
+        """:meth:`_rises` for a few stretches (the parts listed in Python, not by array
+        bookkeeping: the same parts, points and sums)."""
+        u, w = _GL
+        lo, step, count, owner = [], [], [], []
+        for i, (ai, bi) in enumerate(zip(a.tolist(), b.tolist())):
+            cuts = [ai] + [c for c in self.breaks if ai < c < bi] + [bi]
+            for p, q in zip(cuts[:-1], cuts[1:]):
+                k = min(max(math.ceil((q - p) / unit), 1), 8) if unit > 0 else 8
+                lo.append(p)
+                step.append((q - p) / k)
+                count.append(k)
+                owner.append(i)
+        count = np.array(count)
+        lengths = np.repeat(step, count)
+        m = np.arange(lengths.size) - np.repeat(np.cumsum(count) - count, count)
+        starts = np.repeat(lo, count) + lengths * m
+        X = starts[:, None] + lengths[:, None] * (0.5 * (u[None, :] + 1.0))
+        part = (0.5 * lengths) * (self.slope(X) @ w)
+        return np.bincount(np.repeat(owner, count), weights=part, minlength=a.size)
+
     def rise_from(self, ref, X):
         """H(X) - H(ref) at each X (without ``height``: the rises between neighbouring
         points, summed outward from ref, so that each stretch is integrated once)."""
         X = np.asarray(X, float)
         if self.height is not None:
             return self.height(X) - float(self.height(np.array([ref]))[0])
-        pts, inv = np.unique(np.concatenate([[float(ref)], X.ravel()]), return_inverse=True)
+        pts, inv = _sorted_unique(np.concatenate([[float(ref)], X.ravel()]))
         steps = self._steps(pts)
         # summed outward from ref on each side: a point near ref does not carry the rounding
         # of the (possibly far larger) rises beyond it

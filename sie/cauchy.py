@@ -379,15 +379,35 @@ def _l0_inside(wt: Weight, x):
                              - _poly_part_integral(wt, x, 1.0)) / wt.sin
 
 
-def _l0_near_right(wt: Weight, x):
-    """L_0 at 1 < x < 2."""
+@functools.lru_cache(maxsize=64)
+def _l0_sides(wt: Weight):
+    """What :func:`_l0_near_right` needs of a weight, for x > 1 and (by the reflection
+    u -> -u) for x < -1: per side (Gauss-Jacobi (0, alpha) nodes and weights, 30 of them;
+    alpha, beta, alpha + 1, sin(pi alpha), m, L_0 at the end).  Computed once per weight."""
+    out = []
+    for w in (wt, wt.reflected()):
+        tau, wtau = gauss_jacobi_cached(30, 0.0, w.alpha)
+        out.append((tau, wtau, w.alpha, w.beta, w.alpha_p1, w.sin, w.m, _l0_at_one(w)))
+    return tuple(out)
+
+
+def _l0_near_right(side, x):
+    """L_0 at 1 < x < 2 for one side of :func:`_l0_sides` (x < -1: the reflected side at
+    -x)."""
+    tau, wtau, alpha, beta, alpha_p1, sin, m, at_one = side
     # int_1^x (xi-1)^alpha (xi+1)^beta: xi = 1 + (x-1)(1+tau)/2, Gauss-Jacobi (0, alpha)
-    tau, wtau = gauss_jacobi_cached(30, 0.0, wt.alpha)
     half = 0.5 * (x - 1.0)
     xi = 1.0 + half[:, None] * (1.0 + tau[None, :])
-    g = ((xi + 1.0) ** wt.beta) @ wtau
-    ig = half ** wt.alpha_p1 * g
-    return _l0_at_one(wt) - (ig - _poly_part_integral(wt, 1.0, x)) / wt.sin
+    g = ((xi + 1.0) ** beta) @ wtau
+    ig = half ** alpha_p1 * g
+    # int_1^x 2^m P_m^{(-alpha,-beta)}, as _poly_part_integral(wt, 1.0, x)
+    if m == -1:
+        poly = np.zeros(np.shape(x))
+    elif m == 0:
+        poly = x - 1.0
+    else:
+        poly = 0.5 * ((x + 1.0) ** 2 - (1.0 + 1.0) ** 2) - 2.0 * alpha * (x - 1.0)
+    return at_one - (ig - poly) / sin
 
 
 _FAR_TERMS = 60          # |x| >= 2: 2^-60 < 1e-18 relative to mu_0
@@ -430,18 +450,20 @@ def l0(wt: Weight, x):
     if present[0]:
         sel = kind == 0
         out[sel] = _l0_inside(wt, x[sel])
+    if present[1] or present[2]:
+        right, left = _l0_sides(wt)
     if present[1]:
         sel = kind == 1
-        out[sel] = np.where(x[sel] > 0.0, _l0_at_one(wt), _l0_at_one(wt.reflected()))
+        out[sel] = np.where(x[sel] > 0.0, right[-1], left[-1])
     if present[2]:
         sel = kind == 2
         xs = x[sel]
         vals = np.empty(xs.shape)
         pos = xs > 0.0
         if pos.any():
-            vals[pos] = _l0_near_right(wt, xs[pos])
+            vals[pos] = _l0_near_right(right, xs[pos])
         if not pos.all():
-            vals[~pos] = _l0_near_right(wt.reflected(), -xs[~pos])
+            vals[~pos] = _l0_near_right(left, -xs[~pos])
         out[sel] = vals
     return out
 
@@ -493,11 +515,12 @@ def _end_table(wt: Weight, n: int, end: float):
     return float(l0(wt, v)[0]), row
 
 
-def log_potential_series(c, wt: Weight, x, ends=None):
+def log_potential_series(c, wt: Weight, x, ends=None, l0_values=None):
     """(1/pi) int w(u) sum_k c_k P_k(u) log|x - u| du at real x (1-d array): near the
     interval (|x| < 2) from L_0 and the Cauchy transform of the shifted series (module
     docstring; at the ends x = +-1 from tables of both, which do not depend on c), beyond
-    it from the moments of the series (:func:`_log_potential_far`)."""
+    it from the moments of the series (:func:`_log_potential_far`).  ``l0_values``:
+    :func:`l0` at x where the caller has it."""
     c = np.asarray(c, dtype=float)
     x = np.asarray(x, dtype=float)
     if c.size == 0:
@@ -506,7 +529,7 @@ def log_potential_series(c, wt: Weight, x, ends=None):
     far = ax >= 2.0 if c.size <= _FAR_SERIES_MAX_N else np.zeros(x.shape, dtype=bool)
     at_end = ax == 1.0
     if not (far.any() or at_end.any()):
-        return _log_potential_near(c, wt, x, ends)
+        return _log_potential_near(c, wt, x, ends, l0_values)
     out = np.empty(x.shape)
     if far.any():
         out[far] = _log_potential_far(c, wt, x[far])
@@ -520,13 +543,15 @@ def log_potential_series(c, wt: Weight, x, ends=None):
     near = ~(far | at_end)
     if near.any():
         out[near] = _log_potential_near(c, wt, x[near], None if ends is None else
-                                        (ends[0][near], ends[1][near]))
+                                        (ends[0][near], ends[1][near]),
+                                        None if l0_values is None else l0_values[near])
     return out
 
 
-def _log_potential_near(c, wt: Weight, x, ends=None):
-    """log_potential_series through L_0 and the shifted Cauchy transform (any x)."""
-    out = c[0] * l0(wt, x)
+def _log_potential_near(c, wt: Weight, x, ends=None, l0_values=None):
+    """log_potential_series through L_0 (``l0_values`` where given) and the shifted Cauchy
+    transform (any x)."""
+    out = c[0] * (l0(wt, x) if l0_values is None else l0_values)
     if c.size > 1:
         k = np.arange(1, c.size, dtype=float)
         out = out + cauchy_series(c[1:] / (2.0 * k), wt, x, shifted=True, ends=ends).real

@@ -262,16 +262,30 @@ def _graded_nodes(pts, gaps, q, q_small, shift, alpha, beta, tab_u, tab_w, legen
     return x, w, piece, om, op, los, his, counts
 
 
+_END_POWERS = _GRADING ** np.arange(0, _LEVELS + 1)    # 0.15^k, k = 0.._LEVELS
+
+
 def _end_grading(breaks):
     """Points 1 - d 0.15^k and -1 + d 0.15^k, d = half the distance to the nearest break."""
-    edges = np.concatenate([[-1.0], breaks, [1.0]])
-    out = []
-    for end, nb in ((1.0, edges[-2]), (-1.0, edges[1])):
+    breaks = np.asarray(breaks, dtype=float)
+    parts = []
+    for end, nb in ((1.0, breaks[-1] if breaks.size else -1.0),
+                    (-1.0, breaks[0] if breaks.size else 1.0)):
         d = 0.5 * abs(end - nb)
-        steps = d * _GRADING ** np.arange(0, _LEVELS + 1)
-        steps = steps[steps > max(1e-12 * d, 1e4 * np.finfo(float).eps)]
-        out.extend(end - np.sign(end) * steps)
-    return np.asarray(out)
+        steps = d * _END_POWERS
+        steps = steps[steps > max(1e-12 * d, _FLOOR)]
+        parts.append(end - steps if end > 0.0 else end + steps)
+    return np.concatenate(parts)
+
+
+def _union(a, b):
+    """The ascending distinct values of two arrays (np.union1d without its generality)."""
+    u = np.concatenate([a, b])
+    u.sort()
+    keep = np.empty(u.size, dtype=bool)
+    keep[:1] = True
+    np.not_equal(u[1:], u[:-1], out=keep[1:])
+    return u[keep]
 
 
 # transforms of w delta_phi off the interval and its log potential
@@ -830,6 +844,19 @@ def log_far(v, coef):
     return out / math.pi
 
 
+@functools.lru_cache(maxsize=16)
+def _chebyshev_offsets(m):
+    """Chebyshev points of the second kind as offsets s = sin^2(theta/2) in [0, 1] from an
+    end (theta = pi k / (m - 1): exact at the end itself, no cancellation next to it) and
+    their barycentric weights (-1)^k, halved at both ends (read-only)."""
+    s = np.sin(0.5 * np.pi * np.arange(m) / (m - 1)) ** 2
+    lam = (-1.0) ** np.arange(m)
+    lam[[0, -1]] *= 0.5
+    s.flags.writeable = False
+    lam.flags.writeable = False
+    return s, lam
+
+
 @dataclass(eq=False)
 class InversionRemainder:
     """delta_phi, its integral, Cauchy transform and logarithmic potential (module docstring).
@@ -918,7 +945,7 @@ class InversionRemainder:
         # ungraded rule loses 5e-8 at n = 48), and so does the log potential outside
         if self._w is None:
             breaks, q = self.breaks, max(self.q, 24)
-            w_pts = np.union1d(self._w_mesh, _end_grading(breaks))
+            w_pts = _union(self._w_mesh, _end_grading(breaks))
             tw, ww, piece_w, om_w, op_w, lo, hi, counts = _graded_rule(
                 q, self.sol.alpha, self.sol.beta, breaks, w_pts, _Q_SMALL + 2, details=True)
             self._w = ((tw, ww), (lo, hi, counts), (piece_w, om_w, op_w))
@@ -1012,36 +1039,35 @@ class InversionRemainder:
         m points instead of the ~10 graded pieces' nodes.  The Chebyshev points include the
         end itself.  Elsewhere delta_phi at the nodes."""
         tw, _ = self.w_rule
-        piece, om, op = self.w_ends
-        lo_w, hi_w, _ = self.w_panels
+        _, om, op = self.w_ends
+        lo_w, hi_w, counts = self.w_panels
         pts = self._w_mesh
         m = max(int(self.q), math.ceil(_FAR_EXPONENT / math.log(3.0 + math.sqrt(8.0))))
-        ends = []                       # (node indices, their offsets from the end, length)
+        s, lam = _chebyshev_offsets(m)
+        # the nodes ascend piece by piece: those on the end pieces are a prefix and a suffix
+        n = tw.size
+        first, last = 0, n                  # delta_phi itself at tw[first:last]
         if pts.size:
-            for side, edge in ((-1, pts[0]), (1, pts[-1])):
-                inside = (hi_w <= edge) if side < 0 else (lo_w >= edge)
-                sel = np.flatnonzero(inside[piece])
-                length = (1.0 + edge) if side < 0 else (1.0 - edge)
-                if sel.size > m and length > 0.0:
-                    ends.append((side, sel, (op if side < 0 else om)[sel], length))
-        # Chebyshev points of the second kind as offsets from the end: L sin^2(theta/2),
-        # theta = pi k / (m - 1) (exact at the end itself, no cancellation next to it)
-        s = np.sin(0.5 * np.pi * np.arange(m) / (m - 1)) ** 2
-        direct = np.ones(tw.size, dtype=bool)
-        x = []
-        for side, sel, _, length in ends:
-            direct[sel] = False
-            x.append(side * (1.0 - length * s))
-        ends_at = [np.array([-1.0, 1.0])]
-        values = self.phi(np.concatenate(x + [tw[direct]] + ends_at))
-        out = np.empty(tw.size)
-        out[direct] = values[m * len(ends):-2]
-        lam = (-1.0) ** np.arange(m)
-        lam[[0, -1]] *= 0.5
-        for i, (side, sel, offset, length) in enumerate(ends):
-            part = np.empty(sel.size)
-            _barycentric(offset / length, s, lam, values[i * m:(i + 1) * m], part)
-            out[sel] = part
+            head = int(counts[:np.searchsorted(hi_w, pts[0], side="right")].sum())
+            tail = int(counts[np.searchsorted(lo_w, pts[-1], side="left"):].sum())
+            if head > m and 1.0 + pts[0] > 0.0:
+                first = head
+            if tail > m and 1.0 - pts[-1] > 0.0:
+                last = n - tail
+        parts = [tw[first:last], np.array([-1.0, 1.0])]
+        if first:
+            parts.insert(0, -1.0 + (1.0 + pts[0]) * s)
+        if last < n:
+            parts.insert(-1, 1.0 - (1.0 - pts[-1]) * s)
+        values = self.phi(np.concatenate(parts))
+        out = np.empty(n)
+        k = m if first else 0
+        out[first:last] = values[k:k + last - first]
+        if first:
+            _barycentric(op[:first] / (1.0 + pts[0]), s, lam, values[:m], out[:first])
+        if last < n:
+            k += last - first
+            _barycentric(om[last:] / (1.0 - pts[-1]), s, lam, values[k:k + m], out[last:])
         return out, values[-2:]
 
     def _log_clusters(self, side):
@@ -1211,7 +1237,7 @@ class InversionRemainder:
         return out
 
     # -- logarithmic potential -------------------------------------------------------
-    def log_potential(self, v, ends=None):
+    def log_potential(self, v, ends=None, l0_values=None):
         """(1/pi) int_{-1}^{1} w delta_phi log|v - t| dt at real v (any v).
 
         |v| >= 1: the sum of ``w_rule`` with delta_phi(e) subtracted at the nearer end e and
@@ -1223,14 +1249,18 @@ class InversionRemainder:
             V(v) = V(e) + (a int_e^v Psi - int_e^v r) / b,
 
         with int_e^v Psi from the piece sums of ``w_rule`` plus one Gauss rule on the part of
-        the piece containing v, and int_e^v r by Gauss-Legendre split at the breaks."""
+        the piece containing v, and int_e^v r by Gauss-Legendre split at the breaks.
+        ``l0_values``: the weight's potential :func:`sie.cauchy.l0` at v where the caller
+        has it."""
         v = np.asarray(v, dtype=float)
         zm1, zp1 = (v - 1.0, v + 1.0) if ends is None else (np.asarray(ends[0], dtype=float),
                                                             np.asarray(ends[1], dtype=float))
         out = np.empty(v.shape)
         inside = (zm1 < 0.0) & (zp1 > 0.0)
         if np.any(~inside):
-            out[~inside] = self._log_outside(v[~inside], zm1[~inside], zp1[~inside])
+            out[~inside] = self._log_outside(v[~inside], zm1[~inside], zp1[~inside],
+                                             None if l0_values is None
+                                             else l0_values[~inside])
         if np.any(inside):
             out[inside] = self._log_inside(v[inside], zm1[inside], zp1[inside])
         return out
@@ -1248,7 +1278,7 @@ class InversionRemainder:
             self._far_moments = moments
         return self._far_moments
 
-    def _log_outside(self, v, zm1, zp1):
+    def _log_outside(self, v, zm1, zp1, l0_values=None):
         """The |v| >= 1 branch of :meth:`log_potential`.  |v| < _LOG_FAR: the sum of
         ``w_rule`` over w (delta_phi - delta_phi(e)) log|v - t|, |v - t| from the offsets to
         the nearer end e (no cancellation next to it), by clusters of nodes
@@ -1263,6 +1293,8 @@ class InversionRemainder:
         if not np.any(near):
             return out
         v, zm1, zp1 = v[near], zm1[near], zp1[near]
+        weight_potential = (l0(self.sol.weight_data, v) if l0_values is None
+                            else l0_values[near])
         right = zm1 >= 0.0
         sums = np.empty(v.shape)
         pe = np.empty(v.shape)
@@ -1272,7 +1304,7 @@ class InversionRemainder:
                 part = np.empty(int(np.count_nonzero(sel)))
                 _log_sums(np.ascontiguousarray(z[sel], dtype=float), *clusters, part)
                 sums[sel] = part
-        out[near] = sums / math.pi + pe * l0(self.sol.weight_data, v)
+        out[near] = sums / math.pi + pe * weight_potential
         return out
 
     def _phi_in_piece(self, t, k):
