@@ -223,7 +223,8 @@ class Face:
     def _steps(self, pts):
         """H(pts[i+1]) - H(pts[i]) for ascending pts: from the rises between neighbours of
         the face's own sample grid (:meth:`_base_samples`, integrated once) where both
-        points are neighbours on it, else by :meth:`_rises`."""
+        points are neighbours on it, else from those and :meth:`_rises`
+        (:meth:`_grid_steps`)."""
         if pts.size < 2:
             return np.zeros(0)
         a, b = pts[:-1], pts[1:]
@@ -238,8 +239,29 @@ class Face:
         steps = np.empty(a.size)
         steps[known] = S[i[known]]
         if not known.all():
-            steps[~known] = self._rises(a[~known], b[~known])
+            steps[~known] = self._grid_steps(G, S, a[~known], b[~known])
         return steps
+
+    def _grid_steps(self, G, S, a, b):
+        """H(b_i) - H(a_i) for a_i < b_i that are not neighbours on the grid G, whose
+        neighbours rise by S: a stretch with grid points inside (one across a zone, which
+        has no samples) is the rises of the partial cells at its ends (:meth:`_rises`) and
+        of the whole cells between them (S); others by :meth:`_rises` alone."""
+        j0 = np.searchsorted(G, a, side="right")        # the first grid point above a_i
+        j1 = np.searchsorted(G, b, side="left") - 1     # the last one below b_i
+        across = j1 > j0
+        if not across.any():
+            return self._rises(a, b)
+        k = np.flatnonzero(across)
+        lo = np.concatenate([a[~across], a[k], G[j1[k]]])
+        hi = np.concatenate([b[~across], G[j0[k]], b[k]])
+        parts = self._rises(lo, hi)
+        out = np.empty(a.size)
+        out[~across] = parts[:a.size - k.size]
+        left, right = parts[a.size - k.size:a.size], parts[a.size:]
+        inner = np.array([S[p:q].sum() for p, q in zip(j0[k].tolist(), j1[k].tolist())])
+        out[k] = (left + inner) + right
+        return out
 
     # -- the face's own scale -------------------------------------------------------------
     def scan(self):

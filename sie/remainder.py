@@ -278,14 +278,32 @@ def _end_grading(breaks):
     return np.concatenate(parts)
 
 
-def _union(a, b):
-    """The ascending distinct values of two arrays (np.union1d without its generality)."""
-    u = np.concatenate([a, b])
-    u.sort()
-    keep = np.empty(u.size, dtype=bool)
-    keep[:1] = True
-    np.not_equal(u[1:], u[:-1], out=keep[1:])
-    return u[keep]
+@jit()
+def _end_graded_mesh(mesh, breaks, powers, floor):
+    """The ascending mesh ``mesh`` joined with :func:`_end_grading`'s points (``powers``:
+    0.15^k, k = 0.._LEVELS; ``floor``: the shortest graded step), duplicates dropped: the
+    union of ``mesh`` and ``_end_grading(breaks)`` in one call."""
+    nb = breaks.shape[0]
+    out = np.empty(mesh.shape[0] + 2 * powers.shape[0])
+    m = mesh.shape[0]
+    out[:m] = mesh
+    for end in (1.0, -1.0):
+        if end > 0.0:
+            nearest = breaks[nb - 1] if nb else -1.0
+        else:
+            nearest = breaks[0] if nb else 1.0
+        d = 0.5 * abs(end - nearest)
+        least = max(1e-12 * d, floor)
+        for k in range(powers.shape[0]):
+            step = d * powers[k]
+            if step > least:
+                out[m] = end - step if end > 0.0 else end + step
+                m += 1
+    pts = np.sort(out[:m])
+    keep = np.ones(m, dtype=np.bool_)
+    for j in range(1, m):
+        keep[j] = pts[j] != pts[j - 1]
+    return pts[keep]
 
 
 # transforms of w delta_phi off the interval and its log potential
@@ -403,9 +421,9 @@ def _difference_quotient_sums(x, rx, nodes0, r0, weights0, nodes1, r1, weights1,
         out[i] = s
 
 
-_TREE_LEAF = 16       # nodes of a 1/w rule per leaf of its tree (at most)
+_TREE_LEAF = 32       # nodes of a 1/w rule per leaf of its tree (at most)
 _TREE_THETA = 0.5     # a tree node is summed from its moments where radius < theta distance
-_TREE_GROUP = 32      # targets (consecutive, ascending) that walk the tree together
+_TREE_GROUP = 64      # targets (consecutive, ascending) that walk the tree together
 _TREE_MIN = 256       # targets from which the tree pays for itself (fewer: term by term)
 
 
@@ -798,9 +816,57 @@ def _log_sums(z, e, c, starts, centers, radii, terms, moments, out):
             out[i] += moments[k, 0] * math.log(z[i] + centers[k]) - u[i] * acc[i]
 
 
+@jit()
+def _log_cluster_data(offsets, ww, phi_w, pe, nterms):
+    """The clusters of :meth:`InversionRemainder._log_clusters` for one end: the offsets
+    ``offsets`` of the nodes from it ascending (they descend or ascend with the nodes but
+    where two pieces' nodes round alike: then sorted, stably), c_j = w_j (phi_j - pe) in
+    the same order, and the clusters' starts, centres, radii, term counts and moments
+    (:func:`_cluster_starts`, :func:`_log_moments`; ``nterms`` columns)."""
+    n = offsets.shape[0]
+    c = ww * (phi_w - pe)
+    down = True
+    up = True
+    for j in range(1, n):
+        if not offsets[j] < offsets[j - 1]:
+            down = False
+        if not offsets[j] > offsets[j - 1]:
+            up = False
+    if down:
+        e = offsets[::-1].copy()
+        c = c[::-1].copy()
+    elif up:
+        e = offsets.copy()
+    else:
+        order = np.argsort(offsets, kind="mergesort")
+        e = offsets[order]
+        c = c[order]
+    starts = _cluster_starts(e)
+    k = starts.shape[0] - 1
+    centers = np.empty(k)
+    radii = np.empty(k)
+    terms = np.empty(k, dtype=np.int64)
+    moments = np.empty((k, nterms))
+    _log_moments(e, c, starts, centers, radii, terms, moments)
+    return e, c, starts, centers, radii, terms, moments
+
+
+@jit()
+def _log_sums_where(z, take, e, c, starts, centers, radii, terms, moments, out):
+    """:func:`_log_sums` at the points z[i] with take[i], into out[i] (the others left)."""
+    idx = np.flatnonzero(take)
+    part = np.empty(idx.shape[0])
+    _log_sums(z[idx], e, c, starts, centers, radii, terms, moments, part)
+    for k in range(idx.shape[0]):
+        out[idx[k]] = part[k]
+
+
 _LOG_FAR = 2.0        # |v| from which the log potential is summed from moments ...
 _LOG_FAR_TERMS = _FAR_TERMS   # ... with at most this many terms (60: 2^-60 of
                               # int |w delta_phi| left), as the series' far sums
+
+
+_FAR_DIVISORS = np.arange(1.0, _LOG_FAR_TERMS + 1.0)   # k in M_k / k, k >= 1
 
 
 @jit(fastmath={"reassoc"})
@@ -945,7 +1011,7 @@ class InversionRemainder:
         # ungraded rule loses 5e-8 at n = 48), and so does the log potential outside
         if self._w is None:
             breaks, q = self.breaks, max(self.q, 24)
-            w_pts = _union(self._w_mesh, _end_grading(breaks))
+            w_pts = _end_graded_mesh(self._w_mesh, breaks, _END_POWERS, _FLOOR)
             tw, ww, piece_w, om_w, op_w, lo, hi, counts = _graded_rule(
                 q, self.sol.alpha, self.sol.beta, breaks, w_pts, _Q_SMALL + 2, details=True)
             self._w = ((tw, ww), (lo, hi, counts), (piece_w, om_w, op_w))
@@ -978,9 +1044,9 @@ class InversionRemainder:
             pk = (sol.alpha + 1.0) + 0.5 * (sol.alpha + sol.beta + 2.0) * (x - 1.0)
         elif k == 0:
             pk = np.ones(x.shape)
-        else:
-            pk = np.zeros(x.shape)
         a, b = self.a, self.b
+        if k == -1:                                     # P_{-1} = 0
+            return -b / (a * a + b * b) * integral
         return -b / (a * a + b * b) * (integral + 2.0 ** k * pk * rx / sol.exp.sin)
 
     def phi(self, x):
@@ -1082,24 +1148,9 @@ class InversionRemainder:
             _, om, op = self.w_ends
             self._w_values()
             pe = float(self._phi_ends[(side + 1) // 2])
-            offsets = om if side == 1 else op
-            c = ww * (self._phi_w - pe)
-            # the nodes ascend, so their offsets from an end are monotonic but where two
-            # pieces' nodes round alike
-            if np.all(offsets[1:] < offsets[:-1]):
-                e, c = offsets[::-1].copy(), c[::-1].copy()
-            elif not np.all(offsets[1:] > offsets[:-1]):
-                order = np.argsort(offsets, kind="stable")
-                e, c = np.ascontiguousarray(offsets[order]), np.ascontiguousarray(c[order])
-            else:
-                e = offsets
-            starts = _cluster_starts(e)
-            k = starts.size - 1
-            centers, radii = np.empty(k), np.empty(k)
-            terms = np.empty(k, dtype=np.int64)
-            moments = np.empty((k, _LOG_TERMS + 1))
-            _log_moments(e, c, starts, centers, radii, terms, moments)
-            data = self._log_data[side] = (e, c, starts, centers, radii, terms, moments, pe)
+            data = self._log_data[side] = (
+                *_log_cluster_data(om if side == 1 else op, ww, self._phi_w, pe,
+                                   _LOG_TERMS + 1), pe)
         return data
 
     def _resolved_by_w_rule(self, v):
@@ -1273,7 +1324,7 @@ class InversionRemainder:
             tw, _ = self.w_rule
             moments = np.empty(_LOG_FAR_TERMS + 1)
             _power_moments(tw, self._w_values(), moments)
-            moments[1:] /= np.arange(1, _LOG_FAR_TERMS + 1)
+            moments[1:] /= _FAR_DIVISORS
             moments.flags.writeable = False
             self._far_moments = moments
         return self._far_moments
@@ -1285,26 +1336,30 @@ class InversionRemainder:
         (:func:`_log_sums`), plus delta_phi(e) times the weight's potential.  Beyond, the
         expansion of log|v - t| in t / v over the moments of w delta_phi (:func:`log_far`,
         :meth:`far_coefficients`)."""
-        out = np.empty(v.shape)
         far = np.abs(v) >= _LOG_FAR
-        if np.any(far):
+        count = int(np.count_nonzero(far))
+        if count == v.size:
+            return log_far(v, self.far_coefficients())
+        out = np.empty(v.shape)
+        if count:
             out[far] = log_far(v[far], self.far_coefficients())
-        near = ~far
-        if not np.any(near):
-            return out
-        v, zm1, zp1 = v[near], zm1[near], zp1[near]
-        weight_potential = (l0(self.sol.weight_data, v) if l0_values is None
-                            else l0_values[near])
+            near = ~far
+            v, zm1, zp1 = v[near], zm1[near], zp1[near]
+            if l0_values is not None:
+                l0_values = l0_values[near]
+        weight_potential = l0(self.sol.weight_data, v) if l0_values is None else l0_values
         right = zm1 >= 0.0
+        z = np.where(right, zm1, -zp1)            # the distance beyond the nearer end
         sums = np.empty(v.shape)
-        pe = np.empty(v.shape)
-        for side, sel, z in ((1, right, zm1), (-1, ~right, -zp1)):
-            if np.any(sel):
-                *clusters, pe[sel] = self._log_clusters(side)
-                part = np.empty(int(np.count_nonzero(sel)))
-                _log_sums(np.ascontiguousarray(z[sel], dtype=float), *clusters, part)
-                sums[sel] = part
-        out[near] = sums / math.pi + pe * weight_potential
+        pe = [0.0, 0.0]
+        for i, (side, take) in enumerate(((1, right), (-1, ~right))):
+            if take.any():
+                *clusters, pe[i] = self._log_clusters(side)
+                _log_sums_where(z, take, *clusters, sums)
+        near_sums = sums / math.pi + np.where(right, pe[0], pe[1]) * weight_potential
+        if not count:
+            return near_sums
+        out[~far] = near_sums
         return out
 
     def _phi_in_piece(self, t, k):
