@@ -99,8 +99,8 @@ def composite_weighted_rule(q, a, b, a_p1, b_p1, breaks):
     ``a_p1`` / ``b_p1``) with omega_j = w'_j / abs(end - x_j), the other pieces their plain
     weights, and corr = mu_0 - sum omega over all pieces: sum_j omega_j (g_j - g(end)) is
     int W (g - g(end)) piece by piece, and g(end) mu_0 is exact.  Without the split a Gauss
-    sum loses eps times the end's mass ~ 1 / (e + 1) (the projections of a moving punch at a
-    huge friction with breaks: the contact ends off by 2e-9 at 1 - alpha = 2e-8)."""
+    sum loses eps times the end's mass ~ 1 / (e + 1): with an exponent 2e-8 from +-1 the
+    projection g_0, and int psi with it, lost 1e-9 of itself."""
     x, w = composite_rule(q, a, b, breaks)
     if min(a_p1, b_p1) >= _NEAR_MINUS_ONE or len(breaks) == 0:
         return WeightedRule(x, w, 0, 0.0, a, b, a_p1, b_p1)
