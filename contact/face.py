@@ -137,6 +137,7 @@ class Face:
         self._opens = None
         self._lowest = {}           # m -> lowest_points(m)
         self._grid = None           # (key, X, rises between neighbours or None): see _base_samples
+        self._grid_dips = None      # (key, dips known, grid with the dips, rises): _dip_grid
         # the slope is a finite difference of the height, whose step follows the scale: the
         # scan reads the height itself
         self.slope_from_height = bool(slope_from_height) and height is not None
@@ -210,6 +211,9 @@ class Face:
         X = np.asarray(X, float)
         if self.height is not None:
             return self.height(X) - float(self.height(np.array([ref]))[0])
+        H = self._rise_on_grid(float(ref), X.ravel())
+        if H is not None:
+            return H.reshape(X.shape)
         pts, inv = _sorted_unique(np.concatenate([[float(ref)], X.ravel()]))
         steps = self._steps(pts)
         # summed outward from ref on each side: a point near ref does not carry the rounding
@@ -219,6 +223,62 @@ class Face:
         H[k + 1:] = np.cumsum(steps[k:])
         H[:k] = -np.cumsum(steps[:k][::-1])[::-1]
         return H[inv[1:]].reshape(X.shape)
+
+    def _rise_on_grid(self, ref, x):
+        """:meth:`rise_from` where every x is a point of the sample grid or a dip
+        (:meth:`_dip_grid`) and ref lies on the grid's span (else None): the rises between
+        neighbours on that grid, known once per grid, and those of ref's cell on each side
+        of it, summed outward from ref."""
+        grid = self._dip_grid()
+        if grid is None:
+            return None
+        _, _, G, S = grid
+        n = G.size
+        if not G[0] <= ref < G[-1]:
+            return None
+        idx = np.minimum(np.searchsorted(G, x), n - 1)
+        if not np.array_equal(G[idx], x):
+            return None
+        j = int(np.searchsorted(G, ref, side="right")) - 1      # G[j] <= ref < G[j + 1]
+        up, down = S[j:].copy(), S[:j + 1][::-1].copy()           # the cells outward from ref
+        if G[j] == ref:
+            down = down[1:]
+        else:
+            down[0], up[0] = self._rises(np.array([G[j], ref]), np.array([ref, G[j + 1]]))
+        H = np.empty(n)
+        H[n - up.size:] = np.cumsum(up)
+        H[:down.size] = -np.cumsum(down)[::-1]
+        if G[j] == ref:
+            H[j] = 0.0
+        return H[idx]
+
+    def _dip_grid(self):
+        """The sample grid (:meth:`_base_samples`) with the face's dips, where they are known
+        (:meth:`dips`), among its points, and the rises between its neighbours: those of the
+        grid's own cells, and of the cells a dip splits by :meth:`_rises`.  (key, whether the
+        dips were known, points, rises), made once per grid; None without a grid."""
+        if self._grid is None:
+            return None
+        key, G, S = self._grid
+        known = self._dips is not None
+        if self._grid_dips is not None and self._grid_dips[:2] == (key, known):
+            return self._grid_dips
+        if S is None:
+            S = self._rises(G[:-1], G[1:])
+            self._grid = (key, G, S)
+        d = self._dips if known else np.zeros(0)
+        d = d[(d > G[0]) & (d < G[-1])]
+        d = d[G[np.searchsorted(G, d)] != d]                     # not on the grid already
+        if d.size:
+            Gd = np.sort(np.concatenate([G, d]))
+            i = np.searchsorted(G, Gd[:-1], side="right") - 1     # the grid cell of each
+            whole = (Gd[:-1] == G[i]) & (Gd[1:] == G[i + 1])
+            Sd = np.empty(Gd.size - 1)
+            Sd[whole] = S[i[whole]]
+            Sd[~whole] = self._rises(Gd[:-1][~whole], Gd[1:][~whole])
+            G, S = Gd, Sd
+        self._grid_dips = (key, known, G, S)
+        return self._grid_dips
 
     def _steps(self, pts):
         """H(pts[i+1]) - H(pts[i]) for ascending pts: from the rises between neighbours of
