@@ -1025,9 +1025,9 @@ class InversionRemainder:
             out = out - self.other(x)
         return out
 
-    def _phi_no_const(self, x):
-        sol = self.sol
-        x = np.asarray(x, dtype=float)
+    def _quotient_integral(self, x):
+        """(I(x), r(x)) at the points x (module docstring): the difference-quotient sums of
+        the 1/w rules, by the treecode from _TREE_MIN points on, term by term below."""
         fx = call_checked(self.f, "f", (x,), x.shape)
         rx = self._r(x, fx)
         sums = np.empty(x.size)
@@ -1038,7 +1038,12 @@ class InversionRemainder:
             _tree_quotient_sums(*args, _TREE_LIMITS, sums)
         else:
             _difference_quotient_sums(*args, sums)
-        integral = sums.reshape(x.shape) / math.pi
+        return sums.reshape(x.shape) / math.pi, rx
+
+    def _phi_no_const(self, x):
+        sol = self.sol
+        x = np.asarray(x, dtype=float)
+        integral, rx = self._quotient_integral(x)
         k = sol.kappa
         if k == 1:
             pk = (sol.alpha + 1.0) + 0.5 * (sol.alpha + sol.beta + 2.0) * (x - 1.0)
@@ -1058,15 +1063,9 @@ class InversionRemainder:
         a^2 + b^2 = b^2 / sin^2(pi alpha)), which
         :meth:`sie.solution.IntervalSolution.endpoint_value` folds into g(end) / lambda:
         both grow like 1 / sin(pi alpha) as the exponent nears 0 and cancel."""
-        x = np.asarray(x, dtype=float)
-        rx = self._r(x, call_checked(self.f, "f", (x,), x.shape))
-        sums = np.empty(x.size)
-        (n0, w0, r0), (n1, w1, r1) = self.rules
-        _difference_quotient_sums(np.ascontiguousarray(x.ravel()),
-                                  np.ascontiguousarray(rx.ravel()), n0, r0, w0, n1, r1, w1,
-                                  sums)
+        integral, _ = self._quotient_integral(np.asarray(x, dtype=float))
         a, b = self.a, self.b
-        return -b / (a * a + b * b) * sums.reshape(x.shape) / math.pi + self.const
+        return -b / (a * a + b * b) * integral + self.const
 
     def cauchy_inside(self, x, psi_full):
         """H[psi](x) = (g(x) - a psi(x)) / b, the equation itself, with the accurate psi.
