@@ -63,6 +63,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special as sp
 
+from ._jit import jit
 from .cauchy_kernels import basis_kernel, f0_points, series_forward_limit, series_kernel
 from .gaussjacobi import gauss_jacobi_cached
 from .special import jacobi_moment_shifted
@@ -408,6 +409,66 @@ def _l0_near_right(side, x):
     else:
         poly = 0.5 * ((x + 1.0) ** 2 - (1.0 + 1.0) ** 2) - 2.0 * alpha * (x - 1.0)
     return at_one - (ig - poly) / sin
+
+
+def l0_beside(wt: Weight, x):
+    """:func:`l0` with the points beside the interval (1 <= |x| < 2) in one compiled pass
+    (:func:`_l0_beside_points`: the same rule and closed forms, its sums in a loop instead
+    of a matrix product, so the values agree with :func:`l0` to rounding); the others by
+    :func:`l0`."""
+    x = np.asarray(x, dtype=float)
+    ax = np.abs(x)
+    beside = (ax >= 1.0) & (ax < 2.0)
+    if not beside.all():
+        out = l0(wt, x)
+        if beside.any():
+            out[beside] = l0_beside(wt, x[beside])
+        return out
+    out = np.empty(x.shape)
+    _l0_beside_points(np.ascontiguousarray(x).ravel(), *_l0_beside_data(wt), out.ravel())
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _l0_beside_data(wt: Weight):
+    """:func:`_l0_sides` as :func:`_l0_beside_points` takes it (read-only)."""
+    right, left = _l0_sides(wt)
+    params = np.array([right[2:], left[2:]], dtype=float)
+    params.flags.writeable = False
+    return right[0], right[1], left[0], left[1], params
+
+
+@jit()
+def _l0_beside_points(x, tau_r, w_r, tau_l, w_l, params, out):
+    """L_0 at 1 <= |x| < 2 (:func:`_l0_near_right`, x < 0 by the reflection u -> -u):
+    with s = |x| and that side's weight (``params`` rows: alpha, beta, alpha + 1,
+    sin(pi alpha), m, L_0 at the end),
+
+        L_0(s) = L_0(1) - (int_1^s (xi - 1)^alpha (xi + 1)^beta dxi
+                           - int_1^s 2^m P_m^{(-alpha,-beta)}) / sin(pi alpha),
+
+    the first integral by Gauss-Jacobi (0, alpha) in xi = 1 + (s - 1)(1 + tau)/2, the
+    second in closed form; both vanish at s = 1, which leaves L_0(1)."""
+    for i in range(x.shape[0]):
+        right = x[i] > 0.0
+        s = x[i] if right else -x[i]
+        row = 0 if right else 1
+        tau = tau_r if right else tau_l
+        w = w_r if right else w_l
+        alpha, beta, alpha_p1 = params[row, 0], params[row, 1], params[row, 2]
+        m = int(params[row, 4])
+        half = 0.5 * (s - 1.0)
+        g = 0.0
+        for k in range(tau.shape[0]):
+            xi = 1.0 + half * (1.0 + tau[k])
+            g += (xi + 1.0) ** beta * w[k]
+        if m == -1:
+            poly = 0.0
+        elif m == 0:
+            poly = s - 1.0
+        else:
+            poly = 0.5 * ((s + 1.0) ** 2 - (1.0 + 1.0) ** 2) - 2.0 * alpha * (s - 1.0)
+        out[i] = params[row, 5] - (half ** alpha_p1 * g - poly) / params[row, 3]
 
 
 _FAR_TERMS = 60          # |x| >= 2: 2^-60 < 1e-18 relative to mu_0

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .cauchy import (_FAR_SERIES_MAX_N, _far_series_table, cauchy_series, evaluation_points,
-                     l0, log_potential_series)
+                     l0_beside, log_potential_series)
 from .errors import EvaluationPointError, InvalidOrderError, call_checked, real_array
 from .exponents import Exponents
 from .intervals import Interval
@@ -344,7 +344,7 @@ class IntervalSolution:
         if near.any():
             sub = None if ends is None else (np.asarray(ends[0])[near], np.asarray(ends[1])[near])
             vn = v[near]
-            weight_potential = l0(wt, vn)             # the same for both parts
+            weight_potential = l0_beside(wt, vn)      # the same for both parts
             out[near] = (log_potential_series(c, wt, vn, sub, weight_potential)
                          + rem.log_potential(vn, sub, weight_potential))
         return out

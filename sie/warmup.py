@@ -38,7 +38,7 @@ def warm_up() -> None:
                     kernel=lambda s, t: np.exp(s * t), breaks=(0.3,))
         sol.phi(np.array([0.1]))
         sol.cauchy(np.array([0.2, 1.5]))
-        sol.log_potential(np.array([-1.5, 0.2, 1.5]))    # the correction's sums by clusters
+        sol.log_potential(np.array([-1.5, 0.2, 1.5, 3.0]))   # by clusters, and from moments
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
         eqs = Equation(a=[0.7, -0.3], b=1.0, left="bounded", right="bounded",

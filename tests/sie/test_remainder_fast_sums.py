@@ -14,6 +14,9 @@
   others in vector lanes) against the moments summed exactly (``math.fsum``).
 * The barycentric interpolant (:func:`sie.remainder._barycentric`) at and next to its
   points, against numpy's polynomial fit.
+* The weight's potential beside the interval in one compiled loop
+  (:func:`sie.cauchy.l0_beside`, which the log potential of a solution with breaks takes)
+  against :func:`sie.cauchy.l0` and mpmath.
 """
 from __future__ import annotations
 
@@ -175,3 +178,34 @@ def test_barycentric_interpolant():
     assert np.array_equal(out[:m], f)
     ref = np.polynomial.polynomial.polyval(u, coef)
     assert np.max(np.abs(out - ref)) <= 1e-14 * np.sum(np.abs(coef))
+
+
+@pytest.mark.parametrize("alpha,beta", [(0.5, 0.5), (-0.5, -0.5), (0.3, -0.3), (-0.3, -0.7),
+                                        (0.2, 0.8), (1.0 - 3e-7, -1.0 + 3e-7), (3e-7, -3e-7)])
+def test_weight_potential_beside_the_interval(alpha, beta):
+    """sie.cauchy.l0_beside (the points 1 <= |x| < 2 in one compiled loop) against
+    sie.cauchy.l0 (the same rule by a matrix product): to 8 eps mu_0 / |sin(pi alpha)| (the
+    closed form divides by sin(pi alpha)), exactly at +-1 and elsewhere; and both against
+    mpmath's quadrature of (1/pi) int w log|x - u| du for exponents away from integers."""
+    import mpmath
+    from sie.cauchy import Weight, l0, l0_beside
+    wt = Weight.plain(alpha, beta)
+    near = np.geomspace(1e-15, 0.99, 25)
+    x = np.concatenate([[1.0, -1.0], 1.0 + near, -1.0 - near, [0.3, -0.999, 2.5, -7.0]])
+    got, ref = l0_beside(wt, x), l0(wt, x)
+    assert np.max(np.abs(got - ref)) <= 8.0 * np.finfo(float).eps * wt.mu0 / abs(wt.sin)
+    assert np.array_equal(got[:2], ref[:2]) and np.array_equal(got[-4:], ref[-4:])
+    if min(abs(alpha), abs(1.0 - abs(alpha))) < 1e-3:
+        return
+    mpmath.mp.dps = 30
+    a, b = mpmath.mpf(alpha), mpmath.mpf(beta)
+    for xi, g in zip(x[[2, 14, 26, 27, 39, 51]], got[[2, 14, 26, 27, 39, 51]]):
+        X = mpmath.mpf(xi)
+        # the end factors absorbed by u = (1 -+ t)^(1+e)/(1+e), as test_remainder_rules.py
+        left = mpmath.quad(lambda s: (1 - (-1 + ((b + 1) * s) ** (1 / (b + 1)))) ** a
+                           * mpmath.log(abs(X + 1 - ((b + 1) * s) ** (1 / (b + 1)))),
+                           [0, 1 / (b + 1)])
+        right = mpmath.quad(lambda s: (1 + (1 - ((a + 1) * s) ** (1 / (a + 1)))) ** b
+                            * mpmath.log(abs(X - 1 + ((a + 1) * s) ** (1 / (a + 1)))),
+                            [0, 1 / (a + 1)])
+        assert abs(g - float((left + right) / mpmath.pi)) <= 1e-15 * wt.mu0, xi
