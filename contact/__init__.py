@@ -3,11 +3,13 @@
 Zhou, Lee & Jang, "Indentation theory on orthotropic materials subjected to a frictional
 moving punch", Arch. Mech. 66 (2014), corrected (see the documentation, Theory: errata of
 Zhou et al. 2014) and generalised:
-any orthotropic material (or any material of one's own with the methods of the
-:class:`Material` protocol), any punch profile, both directions of sliding.  The numerical
+any orthotropic material, any anisotropic one in any orientation (:class:`Anisotropic`), or
+any material of one's own with the methods of the :class:`Material` protocol; any punch
+profile, both directions of sliding.  The numerical
 path goes through :func:`sie.solve`; the paper's closed forms (corrected) are available as
 ``method="closed_form"`` and serve as regression oracles.
 """
+from .anisotropic import Anisotropic, SurfaceResponse
 from .constants import (SurfaceConstants, limiting_speed, rayleigh_speed, relative_speed,
                         surface_constants)
 from .continuation import Event
@@ -26,6 +28,7 @@ from .subsurface import Extremum, StressExtrema, StressField, half_space_stress
 
 __all__ = [
     "Material", "MaterialModes", "SurfaceKernel", "Orthotropic", "Isotropic", "zhou2014",
+    "Anisotropic", "SurfaceResponse",
     "SurfaceConstants", "surface_constants", "rayleigh_speed", "limiting_speed",
     "relative_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",

@@ -5,7 +5,9 @@ the contact problem; :meth:`Anisotropic.surface_response` gives the response of 
 the half-space Y <= 0 to tractions moving at a steady relative speed c, split into local and
 Hilbert parts.  For an orthotropic material aligned with the frame it reproduces the closed
 forms of :mod:`contact.constants`; it also holds for a material of any symmetry, rotated in any
-way.  (Step 1: :func:`contact.solve` does not yet take an :class:`Anisotropic`.)
+way.  :class:`Anisotropic` is a :class:`contact.Material`: :meth:`Anisotropic.surface_constants`
+gives :func:`contact.solve` the entries of the response that the contact equation needs
+(N11, N12, N21, N22 and the couplings M12, M21, M22 of :class:`contact.SurfaceConstants`).
 
 Conventions
 -----------
@@ -28,7 +30,14 @@ the surface responds as (:class:`SurfaceResponse`)::
     sigma_a (X, 0)   = sum_j  A_aj s_j(X) + B_aj Hc[s_j](X),        a = Voigt 1..6.
 
 For an aligned orthotropic material (:func:`contact.surface_constants`):
-N11 = M_YY, N12 = L_YX, N21 = A_XX,p = A[0, 1], N22 = B_XX,q = B[0, 0].
+N11 = M_YY, N12 = L_YX, N21 = A_XX,p = A[0, 1], N22 = B_XX,q = B[0, 0].  For any material,
+with r = 0 (the punch is frictionless along Z), the couplings M12 = M_YX, M21 = B_XX,p =
+B[0, 1] and M22 = A_XX,q = A[0, 0] complete them (:meth:`SurfaceResponse.surface_constants`)::
+
+    dv/dX (X, 0)    = N12 q + N11 Hc[p] + M12 Hc[q],
+    sigma_XX (X, 0) = N21 p + N22 Hc[q] + M21 Hc[p] + M22 q;
+
+L_YY, the local part of dv/dX under p, vanishes: L is antisymmetric.
 
 Relative speed c = V / sqrt(C66 / rho), so that rho V^2 = C66 c^2 and a speed means what it
 means for :class:`contact.Orthotropic` (whose C33 is this C66).
@@ -107,6 +116,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .constants import SurfaceConstants
 from .errors import FrictionError, MaterialError, SpeedError, check_finite, real_array
 from .material import Orthotropic
 
@@ -125,6 +135,8 @@ DEFINITENESS_TOLERANCE = 1e-12
 #: Deviation |R^T R - I| accepted in a rotation matrix.
 ROTATION_TOLERANCE = 1e-10
 _SIGN_MAX_ITERATIONS = 100
+#: The speeds whose surface constants a material keeps (:meth:`Anisotropic.surface_constants`).
+CONSTANTS_CACHE_SIZE = 64
 _LIMIT_SAMPLES = 2048
 
 
@@ -189,7 +201,9 @@ class SurfaceResponse:
     :attr:`N11` = slope_hilbert[Y, p], :attr:`N12` = slope_local[Y, q],
     :attr:`N21` = stress_local[XX, p], :attr:`N22` = stress_hilbert[XX, q]; a material
     without the mirror symmetries of an aligned orthotropic one has further entries
-    (e.g. slope_hilbert[Y, q], dv/dX under Hc[q]; slope_local[Y, r]).
+    (:attr:`M12` = slope_hilbert[Y, q], dv/dX under Hc[q]; :attr:`M21` =
+    stress_hilbert[XX, p]; :attr:`M22` = stress_local[XX, q]; slope_local[Y, r], ...).
+    :meth:`surface_constants` collects those of the contact equation.
 
     References
     ----------
@@ -224,6 +238,37 @@ class SurfaceResponse:
     def N22(self) -> float:
         """sigma_XX per Hc[q]: stress_hilbert[0, 0]."""
         return float(self.stress_hilbert[0, 0])
+
+    @property
+    def M12(self) -> float:
+        """dv/dX per Hc[q]: slope_hilbert[1, 0] (0 with the mirror plane X = 0)."""
+        return float(self.slope_hilbert[1, 0])
+
+    @property
+    def M21(self) -> float:
+        """sigma_XX per Hc[p]: stress_hilbert[0, 1] (0 with the mirror plane X = 0)."""
+        return float(self.stress_hilbert[0, 1])
+
+    @property
+    def M22(self) -> float:
+        """sigma_XX per q: stress_local[0, 0] (0 with the mirror plane X = 0)."""
+        return float(self.stress_local[0, 0])
+
+    def surface_constants(self) -> SurfaceConstants:
+        """The entries the contact equation needs, as :class:`contact.SurfaceConstants`:
+        N11, N12, N21, N22 (the properties of the same names) and the couplings M12, M21,
+        M22; ``eta_product``, ``eta_sum`` and ``rayleigh_denominator`` (of the orthotropic
+        formulas) None.
+
+        With q = mu_f p and r = 0 they give dv/dX = a p + b Hc[p], a = N12 mu_f,
+        b = N11 + M12 mu_f, and sigma_XX = (N21 + M22 mu_f) p + (N22 mu_f + M21) Hc[p]: the
+        entries [1] and [0] of :meth:`pressure_coefficients` but for slope_local[1, 1] (the
+        local part of dv/dX under p), which vanishes because slope_local is antisymmetric
+        (reciprocity: Ting 1996, ch. 7).
+        """
+        return SurfaceConstants(N11=self.N11, N12=self.N12, N21=self.N21, N22=self.N22,
+                                c=self.c, rayleigh_speed=self.rayleigh_speed,
+                                M12=self.M12, M21=self.M21, M22=self.M22)
 
     def pressure_coefficients(self, q_ratio=0.0) -> PressureCoefficients:
         """The response to a pressure p alone, with q = q_ratio p (Coulomb friction, signed
@@ -278,10 +323,18 @@ class Anisotropic:
 
     Notes
     -----
+    A :class:`contact.Material`: :func:`contact.solve`, :func:`contact.load_curve` and
+    :func:`contact.solve_batch` take it (:meth:`surface_constants`, :meth:`rayleigh_speed`,
+    :meth:`limiting_speed`, :meth:`relative_speed`, :meth:`half_space_modes`).  The punch is
+    frictionless along Z (r = 0); a material without the mirror plane X = 0 couples the
+    pressure and the friction traction (M12, M21, M22 of :class:`contact.SurfaceConstants`),
+    which ``method="closed_form"`` refuses.
+
     The relative speed is c = V / sqrt(C66 / rho), C66 the XY shear stiffness, as for
     :class:`contact.Orthotropic` (whose C33 is C66 here).  The moving half-space is the
     Stroh formalism with the inertia term, evaluated through the matrix sign function
     (:mod:`contact.anisotropic`): accurate for repeated roots (isotropy) and near them.
+    Equal stiffness and density make equal (and equally hashed) materials.
 
     References
     ----------
@@ -303,6 +356,15 @@ class Anisotropic:
     (-0.75, 0.25, -1.0, -2.0)
     >>> round(m.rayleigh_speed(), 12), m.limiting_speed()
     (0.919401686762, 1.0)
+
+    It solves contacts as the plane isotropic material does:
+
+    >>> r = contact.solve(m, contact.CylindricalPunch(1.0), load=0.01, speed=0.5,
+    ...                   friction=0.3)
+    >>> r0 = contact.solve(contact.Isotropic(2.5, 0.25), contact.CylindricalPunch(1.0),
+    ...                    load=0.01, speed=0.5, friction=0.3)
+    >>> abs(r.ends[1] - r0.ends[1]) < 1e-12 * r0.half_width
+    True
     """
 
     __slots__ = ("_C", "_rho", "_scale", "_blocks", "_cache")
@@ -675,6 +737,80 @@ class Anisotropic:
         return SurfaceResponse(c=c, rayleigh_speed=self.rayleigh_speed(),
                                slope_local=out[0], slope_hilbert=out[1],
                                stress_local=out[2], stress_hilbert=out[3])
+
+    # ------------------------------------------------------------------ contact.Material
+    def surface_constants(self, c) -> SurfaceConstants:
+        """The constants of the contact equation at the relative speed ``c``
+        (:class:`contact.Material`): N11, N12, N21, N22 and the couplings M12, M21, M22 of
+        :class:`contact.SurfaceConstants`, from :meth:`surface_response`
+        (:meth:`SurfaceResponse.surface_constants`); ``eta_product``, ``eta_sum`` and
+        ``rayleigh_denominator`` None.  Memoised per speed (the material is immutable): the
+        last :data:`CONSTANTS_CACHE_SIZE` speeds asked.
+
+        Parameters
+        ----------
+        c : float
+            Relative speed V / sqrt(C66 / rho), 0 <= c < c_R.
+
+        Returns
+        -------
+        contact.SurfaceConstants
+
+        Raises
+        ------
+        SpeedError
+            c negative, not finite, or not below the Rayleigh speed.
+
+        References
+        ----------
+        Stroh (1962); Ting (1996), ch. 7 and 12 (module docstring).
+
+        Examples
+        --------
+        A ply turned by 30 degrees about Z couples p and q (M12 != 0); without friction the
+        contact equation is still b = N11, a = 0:
+
+        >>> import contact
+        >>> from scipy.spatial.transform import Rotation
+        >>> ply = contact.Anisotropic.from_engineering(140.0, 10.0, 10.0, 0.3, 0.3, 0.45,
+        ...                                            5.0, 5.0, 3.4)
+        >>> sc = ply.rotated(Rotation.from_euler("z", 30, degrees=True)).surface_constants(0.0)
+        >>> sc.M12 != 0.0, sc.equation_coefficients(0.0) == (0.0, sc.N11)
+        (True, True)
+        """
+        c = check_finite("relative speed c", c, SpeedError)
+        key = ("constants", c)
+        sc = self._cache.get(key)
+        if sc is None:
+            sc = self.surface_response(c).surface_constants()
+            speeds = [k for k in self._cache if isinstance(k, tuple)]
+            for old in speeds[:len(speeds) - CONSTANTS_CACHE_SIZE + 1]:
+                del self._cache[old]
+            self._cache[key] = sc
+        return sc
+
+    def half_space_modes(self, c):
+        """The modes of the half-space at the relative speed ``c``, 0 <= c < c_R, for the
+        field under the surface (:class:`contact.Material`, :class:`contact.MaterialModes`):
+        the three decaying modes of the Stroh matrix, through Stroh's modal vectors, whose
+        combination of the Cauchy transforms of the tractions gives the stresses at points
+        (X, Y), Y < 0 (:mod:`contact.stroh_modes`).
+
+        Parameters
+        ----------
+        c : float
+            Relative speed V / sqrt(C66 / rho), 0 <= c < c_R.
+
+        Returns
+        -------
+        contact.MaterialModes
+
+        References
+        ----------
+        Stroh, J. Math. Phys. 41 (1962) 77-103; Ting (1996), ch. 5 and 12.
+        """
+        from .stroh_modes import stroh_modes      # the other helper writes this module
+        return stroh_modes(self, c)
 
 
 # --------------------------------------------------------------------------

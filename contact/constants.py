@@ -15,6 +15,11 @@ documentation, Theory: errata of Zhou et al. 2014)::
     dv/dX (X, 0)   = N12 q(X) + N11 Hc[p](X),
     sigma_XX(X, 0) = N21 p(X) + N22 Hc[q](X).
 
+A material without the mirror symmetries of an aligned orthotropic one (a rotated ply, a
+crystal: :class:`contact.Anisotropic`) adds three terms, M12 Hc[q], M21 Hc[p] and M22 q
+(:class:`SurfaceConstants`); the contact equation keeps its form a p + b Hc[p] = H' with
+a = N12 mu_f and b = N11 + M12 mu_f (:meth:`SurfaceConstants.equation_coefficients`).
+
 Derivation (independent of the paper's eq. (4.4) and Appendix)
 ---------------------------------------------------------------
 Take u, v ~ exp(i k X + |k| eta Y).  The equations of motion give eq. (3.1), the quadratic
@@ -78,18 +83,32 @@ NEAR_RAYLEIGH_FRACTION = 0.99
 
 @dataclass(frozen=True)
 class SurfaceConstants:
-    """Surface constants of eqs. (4.5)-(4.6) of Zhou et al. 2014 at one relative speed.
+    """Surface constants of eqs. (4.5)-(4.6) of Zhou et al. 2014 at one relative speed,
+    with the couplings of a material of any symmetry.
 
     Returned by :func:`surface_constants` (and by a material's ``surface_constants(c)``,
     :class:`contact.Material`); :func:`contact.solve` accepts one as ``constants=`` (a sweep
-    over friction at one speed shares it).
+    over friction at one speed shares it).  With the tangential traction q
+    (sigma_XY(X, 0) = -q), the pressure p (sigma_YY(X, 0) = -p), no traction along Z
+    (the punch is frictionless along its generators) and
+    Hc[f](X) = (1/pi) PV int f(t) / (t - X) dt, the surface responds as::
+
+        dv/dX (X, 0)    = N12 q + N11 Hc[p] + M12 Hc[q],                     (1)
+        sigma_XX (X, 0) = N21 p + N22 Hc[q] + M21 Hc[p] + M22 q.              (2)
+
+    With q = mu_f p (Coulomb friction, signed), (1) on the contact is the equation
+    a p + b Hc[p] = H'(X) of the punch's slope H', a = N12 mu_f, b = N11 + M12 mu_f
+    (:meth:`equation_coefficients`), and (2) is
+    sigma_XX = (N21 + M22 mu_f) p + (N22 mu_f + M21) Hc[p]
+    (:meth:`sigma_xx_coefficients`).
 
     Attributes
     ----------
     N11, N12 : float
-        dv/dX (X, 0) = N12 q + N11 Hc[p]  (unit: 1 / stress unit of the material).
+        dv/dX (X, 0) = N12 q + N11 Hc[p] (+ M12 Hc[q])  (unit: 1 / stress unit of the
+        material).
     N21, N22 : float
-        sigma_XX(X, 0) = N21 p + N22 Hc[q]  (dimensionless).
+        sigma_XX(X, 0) = N21 p + N22 Hc[q] (+ M21 Hc[p] + M22 q)  (dimensionless).
     c : float
         Relative speed (V / sqrt(C33 / rho) for an orthotropic material).
     rayleigh_speed : float
@@ -100,11 +119,36 @@ class SurfaceConstants:
     rayleigh_denominator : float or None
         Delta(c) = P (C22 C11' - C12^2) - C33 c^2 C11' of an orthotropic material (> 0
         below c_R); None for a material without it.
+    M12 : float, keyword, default 0
+        dv/dX per Hc[q]: the Hilbert part of the normal slope under the tangential
+        traction (unit: 1 / stress unit).
+    M21 : float, keyword, default 0
+        sigma_XX per Hc[p] (dimensionless).
+    M22 : float, keyword, default 0
+        sigma_XX per q, the local part (dimensionless).
+
+    Notes
+    -----
+    M12, M21 and M22 vanish for a material with the mirror plane X = 0, an orthotropic
+    material aligned with the frame among them (mirrored, p(X) -> p(-X), q(X) -> -q(-X),
+    Hc changes sign, dv/dX is odd and sigma_XX even: each N term maps onto itself and each
+    M term onto minus itself), so that :class:`contact.Orthotropic` leaves them 0; a ply
+    rotated about Z or a crystal off its axes (:class:`contact.Anisotropic`) has them.
+
+    Equation (1) has no local term in p: the local part L of the slopes
+    du_i/dX = L_ij s_j + M_ij Hc[s_j] (s = (q, p, r)) is antisymmetric, so L_YY = 0, and
+    its Hilbert part M symmetric, by reciprocity (Ting, Anisotropic Elasticity (1996),
+    ch. 7, the identities of the Barnett-Lothe tensors; tests/contact/test_anisotropic.py
+    checks both on a triclinic material, plain and rotated).  Hence N12 = L_Yq = -L_Xp and
+    M12 = M_Yq = M_Xp.  Without friction (mu_f = 0) the equation is a = 0, b = N11 for any
+    symmetry: both end exponents are 1/2 or -1/2.
 
     References
     ----------
     Zhou, Lee & Jang, Arch. Mech. 66 (2014), eqs. (4.4)-(4.6); the formulas in closed form
     through P and S: see :func:`orthotropic_surface_constants` and the module docstring.
+    Stroh, J. Math. Phys. 41 (1962) 77-103 and Ting (1996), ch. 5, 7 and 12 (M12, M21, M22
+    of an anisotropic half-space: :meth:`contact.Anisotropic.surface_constants`).
 
     Examples
     --------
@@ -118,9 +162,18 @@ class SurfaceConstants:
     A material of one's own gives the four constants, its speed and c_R, and may leave the
     orthotropic quantities out:
 
-    >>> contact.SurfaceConstants(N11=-0.75, N12=0.25, N21=-1.0, N22=-2.0, c=0.0,
-    ...                          rayleigh_speed=0.9194).eta_sum is None
-    True
+    >>> sc = contact.SurfaceConstants(N11=-0.75, N12=0.25, N21=-1.0, N22=-2.0, c=0.0,
+    ...                               rayleigh_speed=0.9194)
+    >>> sc.eta_sum is None, sc.M12
+    (True, 0.0)
+
+    The equation's coefficients with friction mu_f = 0.3, and with a coupling M12:
+
+    >>> sc.equation_coefficients(0.3)
+    (0.075, -0.75)
+    >>> import dataclasses
+    >>> dataclasses.replace(sc, M12=0.5).equation_coefficients(0.3)
+    (0.075, -0.6)
     """
 
     N11: float
@@ -132,6 +185,23 @@ class SurfaceConstants:
     eta_product: float | None = None
     eta_sum: float | None = None
     rayleigh_denominator: float | None = None
+    M12: float = 0.0
+    M21: float = 0.0
+    M22: float = 0.0
+
+    def equation_coefficients(self, mu_f) -> tuple[float, float]:
+        """(a, b) of the contact equation a p + b Hc[p] = H'(X) with q = mu_f p: eq. (1) of
+        the class docstring, a = N12 mu_f, b = N11 + M12 mu_f; (0.0, N11) at mu_f = 0."""
+        if mu_f == 0.0:
+            return 0.0, self.N11
+        return self.N12 * mu_f, self.N11 + self.M12 * mu_f
+
+    def sigma_xx_coefficients(self, mu_f) -> tuple[float, float]:
+        """(A, B) of sigma_XX(X, 0) = A p + B Hc[p] with q = mu_f p: eq. (2) of the class
+        docstring, A = N21 + M22 mu_f, B = N22 mu_f + M21; (N21, M21) at mu_f = 0."""
+        if mu_f == 0.0:
+            return self.N21, self.M21
+        return self.N21 + self.M22 * mu_f, self.N22 * mu_f + self.M21
 
 
 # --------------------------------------------------------------------------
@@ -323,11 +393,13 @@ def relative_speed(material, V) -> float:
 
 
 def surface_constants(material, c) -> SurfaceConstants:
-    """Surface constants N11, N12, N21, N22 of a material at the relative speed ``c``.
+    """Surface constants N11, N12, N21, N22 (and M12, M21, M22) of a material at the
+    relative speed ``c``.
 
     dv/dX (X, 0) = N12 q + N11 Hc[p] and sigma_XX (X, 0) = N21 p + N22 Hc[q] (Zhou et al.
     2014, eqs. (4.5)-(4.6); for an orthotropic material the closed forms of
-    :func:`orthotropic_surface_constants`).
+    :func:`orthotropic_surface_constants`), with M12 Hc[q] and M21 Hc[p] + M22 q added for
+    a material of lower symmetry (:class:`SurfaceConstants`).
 
     Parameters
     ----------
@@ -350,8 +422,8 @@ def surface_constants(material, c) -> SurfaceConstants:
         If c is not finite, negative, or not below the Rayleigh speed c_R.
     MaterialError
         The material's ``surface_constants(c)`` returns something other than a
-        :class:`SurfaceConstants` of finite real N's with N11 < 0, for this c and its
-        c_R, or raises (or its ``rayleigh_speed()`` is not admissible).
+        :class:`SurfaceConstants` of finite real N's and M's with N11 < 0, for this c
+        and its c_R, or raises (or its ``rayleigh_speed()`` is not admissible).
 
     Warns
     -----
@@ -375,7 +447,8 @@ def surface_constants(material, c) -> SurfaceConstants:
     c, c_R = check_subrayleigh(material, c)
     sc = call(material, "surface_constants", c)
     if type(sc) is SurfaceConstants and sc.c == c and sc.rayleigh_speed == c_R and \
-            _finite_floats(sc.N11, sc.N12, sc.N21, sc.N22) and sc.N11 < 0.0 and \
+            _finite_floats(sc.N11, sc.N12, sc.N21, sc.N22, sc.M12, sc.M21, sc.M22) and \
+            sc.N11 < 0.0 and \
             _finite_floats(*(v for v in (sc.eta_product, sc.eta_sum,
                                          sc.rayleigh_denominator) if v is not None)):
         return sc           # what the checks below accept, at a fraction of their cost
@@ -383,7 +456,7 @@ def surface_constants(material, c) -> SurfaceConstants:
     if not isinstance(sc, SurfaceConstants):
         raise MaterialError(f"{where} must return a contact.SurfaceConstants, got "
                             f"{type(sc).__name__}")
-    for name in ("N11", "N12", "N21", "N22"):
+    for name in ("N11", "N12", "N21", "N22", "M12", "M21", "M22"):
         check_finite(f"{name} of {where}", getattr(sc, name), MaterialError)
     for name in ("eta_product", "eta_sum", "rayleigh_denominator"):
         if getattr(sc, name) is not None:

@@ -785,9 +785,9 @@ def series_tail(C):
 
 def _gap_samples(face, eq, state, m=400):
     """The gap g = H - v - v0 at points of the face outside the zones, from g(c_1) = 0:
-    v' = N12 mu_f p + N11 Hc[p], so across the zones left of X the friction term adds
-    N12 mu_f times their loads, and
-        g(X) = H(X) - H(c_1) - N12 mu_f int_{c_1}^X p + N11 (V(X) - V(c_1)).
+    v' = a p + b Hc[p] (a = N12 mu_f, b = N11 + M12 mu_f: ``eq.a``, ``eq.b``), so across
+    the zones left of X the friction term adds a times their loads, and
+        g(X) = H(X) - H(c_1) - a int_{c_1}^X p + b (V(X) - V(c_1)).
     (g, X, gd, Xd): at ``m`` samples X of the face, and at the bottom Xd of each of its own
     valleys outside the zones (:meth:`contact.face.Face.dips`), in one evaluation.  A
     layered material's kernel adds -int (K(X, t) - K(c_1, t)) p(t) dt (:mod:`contact.kernel`)."""

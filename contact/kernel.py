@@ -5,9 +5,9 @@ surface response (:class:`contact.SurfaceKernel`, from its optional ``surface_ke
 The contact equation on the zones L is then (the conventions of the documentation, Theory:
 the contact model and its conventions; q = mu_f p)
 
-    N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt + int_L k(X, t) p(t) dt = H'(X),
+    a p(X) + (b/pi) PV int_L p(t)/(t - X) dt + int_L k(X, t) p(t) dt = H'(X),
 
-    k = k_p + mu_f k_q,
+    a = N12 mu_f, b = N11 + M12 mu_f, k = k_p + mu_f k_q,
 
 and the gap g = H - v - v_0 between and outside the zones gains -int_L (K(X, t) - K(X0, t))
 p(t) dt against a point X0 where it is known, K the antiderivative of k in X.  A material

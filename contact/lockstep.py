@@ -1,7 +1,7 @@
 """The first step of the load continuation for many cases at once.
 
 Cases that share a punch face and differ in the coefficients of the equation (friction and
-speed: a = N12 mu_f, b = N11) and in the load go through the first step of
+speed: a = N12 mu_f, b = N11 + M12 mu_f) and in the load go through the first step of
 :func:`contact.continuation.follow_load` together -- first touch, the power-law prediction to
 the load, the side conditions there, the solution and its checks -- each stage one vectorised
 call (an :class:`sie.Equation` with a case axis) instead of one per case.  It is the

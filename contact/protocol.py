@@ -5,15 +5,16 @@ methods.  The surface relations of the moving half-space (Zhou, Lee & Jang 2014,
 (4.5)-(4.6), with the conventions of the documentation, Theory: the contact model and its
 conventions)::
 
-    dv/dX (X, 0)   = N12 q(X) + N11 Hc[p](X),
-    sigma_XX(X, 0) = N21 p(X) + N22 Hc[q](X),
+    dv/dX (X, 0)   = N12 q(X) + N11 Hc[p](X) [+ M12 Hc[q](X)],
+    sigma_XX(X, 0) = N21 p(X) + N22 Hc[q](X) [+ M21 Hc[p](X) + M22 q(X)],
 
-need the four constants at the relative speed c (:meth:`Material.surface_constants`); the
+need the constants at the relative speed c (:meth:`Material.surface_constants`; the
+couplings M12, M21, M22 of a material without the mirror plane X = 0 default to 0); the
 speeds admissible are 0 <= c < c_R (:meth:`Material.rayleigh_speed`); the field under the
 surface is a combination of Cauchy transforms of the tractions at complex points
 (:meth:`Material.half_space_modes`, :class:`MaterialModes`).  :class:`contact.Orthotropic`
-(and :func:`contact.Isotropic`) implement it; so may any object of a user's own, of any
-class: nothing in :mod:`contact` looks at a material's class.
+(and :func:`contact.Isotropic`) and :class:`contact.Anisotropic` implement it; so may any
+object of a user's own, of any class: nothing in :mod:`contact` looks at a material's class.
 
 The public entries (:func:`contact.surface_constants`, :func:`contact.rayleigh_speed`,
 :func:`contact.limiting_speed`, :func:`contact.relative_speed`,
@@ -163,8 +164,11 @@ class Material(Protocol):
     surface_constants : callable c -> SurfaceConstants
         N11, N12, N21, N22 at the relative speed c, 0 <= c < c_R (only such c are passed):
         finite real numbers with N11 < 0, ``c`` the speed asked and ``rayleigh_speed`` the
-        material's c_R.  ``eta_product``, ``eta_sum`` and ``rayleigh_denominator`` are
-        those of the orthotropic formulas, and may be left None.
+        material's c_R; the couplings M12, M21, M22 finite (0, the default, for a material
+        with the mirror plane X = 0).  ``eta_product``, ``eta_sum`` and
+        ``rayleigh_denominator`` are those of the orthotropic formulas, and may be left
+        None.  With friction the coefficient b = N11 + M12 mu_f of Hc[p] must stay < 0
+        (:class:`~contact.FrictionError` otherwise).
     rayleigh_speed : callable () -> float
         The relative Rayleigh speed c_R > 0: the admissible speeds are 0 <= c < c_R.
     limiting_speed : callable () -> float

@@ -171,7 +171,8 @@ class ContactResult:
     Examples
     --------
     A flat punch sliding with friction 0.3: the exponents solve
-    cot(pi alpha) = -mu_f N12 / N11, with alpha + beta = -1 (index 1):
+    cot(pi alpha) = -a / b = -mu_f N12 / (N11 + M12 mu_f) (M12 = 0 here), with
+    alpha + beta = -1 (index 1):
 
     >>> import math, contact
     >>> r = contact.solve(contact.Isotropic(1.0, 0.3), contact.FlatPunch(1.0), load=1.0,
@@ -233,8 +234,9 @@ class ContactResult:
 
     @property
     def residual(self) -> float:
-        """max abs(N12 mu_f p + N11 Hc[p] [+ int k p] - v') at 64 Chebyshev points of each
-        zone, relative to max abs(v') (or to the size of N11 Hc[p] when v' = 0); computed on
+        """max abs(a p + b Hc[p] [+ int k p] - v') at 64 Chebyshev points of each zone,
+        a = N12 mu_f, b = N11 + M12 mu_f (:meth:`SurfaceConstants.equation_coefficients`),
+        relative to max abs(v') (or to the size of b Hc[p] when v' = 0); computed on
         first access.  A layered material's kernel term (:class:`contact.SurfaceKernel`) by
         a finer rule than the solve's own (:meth:`sie.Solution.kernel_integral`): an
         unresolved kernel shows here."""
@@ -310,15 +312,19 @@ class ContactResult:
         return self.solution.cauchy(X)
 
     def sigma_xx(self, X):
-        """Surface in-plane stress sigma_XX(X, 0) = N21 p + N22 mu_f Hc[p] at any real X
-        (N22 multiplies the shear term, where the paper's eq. (4.3) prints N21: see the
-        documentation, Theory: errata of Zhou et al. 2014).  At mu_f = 0 only N21 p.  A
+        """Surface in-plane stress sigma_XX(X, 0) at any real X:
+        (N21 + M22 mu_f) p + (N22 mu_f + M21) Hc[p] (:class:`SurfaceConstants`, eq. (2),
+        with q = mu_f p; N22 multiplies the shear term, where the paper's eq. (4.3) prints
+        N21: see the documentation, Theory: errata of Zhou et al. 2014).  For an
+        orthotropic material aligned with the frame (M21 = M22 = 0) N21 p + N22 mu_f Hc[p],
+        at mu_f = 0 only N21 p: Hc[p] is evaluated only where its coefficient is not 0.  A
         layered material adds int s(X, t) p(t) dt, s from its kernel's ``sigma_xx`` (and
         ``shear_sigma_xx``, :class:`contact.SurfaceKernel`); without them it is refused."""
         p = self.pressure(X)
-        out = self.constants.N21 * p
-        if self.mu_f != 0.0:
-            out = out + self.constants.N22 * self.mu_f * self.hilbert_pressure(X)
+        local, hilbert = self.constants.sigma_xx_coefficients(self.mu_f)
+        out = local * p
+        if hilbert != 0.0:
+            out = out + hilbert * self.hilbert_pressure(X)
         if self._kernel is not None:
             with own_errors():
                 out = out + self.solution.kernel_integral(self._kernel.sigma_xx, self._X(X))
@@ -528,17 +534,19 @@ def _residual_of(res):
     if res._kernel is not None:              # int k p moved to the right-hand side
         with own_errors():
             f = f - res.solution.kernel_integral(res._kernel.slope, X)
-    return float(relative_residual(f, F, res.constants.N11, res.constants.N12 * res.mu_f))
+    a, b = res.constants.equation_coefficients(res.mu_f)
+    return float(relative_residual(f, F, b, a))
 
 
-def relative_residual(f, F, N11, a):
-    """max abs(a p + N11 Hc[p] - f) / scale over the last axis, from F = Hc[p] + i p and
-    f = v' at the same points (N11, a: scalars, or columns for rows of points).  The scale
+def relative_residual(f, F, b, a):
+    """max abs(a p + b Hc[p] - f) / scale over the last axis, from F = Hc[p] + i p and
+    f = v' at the same points (b, a: scalars, or columns for rows of points; b = N11 +
+    M12 mu_f, a = N12 mu_f, :meth:`SurfaceConstants.equation_coefficients`).  The scale
     of the terms: Hc[p] can vanish by symmetry (flat punch, mu = 0) while its rounding is
-    eps |N11| max|p|."""
-    psi, hc = F.imag, N11 * F.real
+    eps |b| max|p|."""
+    psi, hc = F.imag, b * F.real
     scale = np.maximum.reduce([np.max(np.abs(f), axis=-1), np.max(np.abs(hc), axis=-1),
-                               np.max(np.abs(N11 * psi), axis=-1),
+                               np.max(np.abs(b * psi), axis=-1),
                                np.full(np.shape(f)[:-1], np.finfo(float).tiny)])
     return np.max(np.abs(a * psi + hc - f), axis=-1) / scale
 

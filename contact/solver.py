@@ -4,8 +4,11 @@ Zhou, Lee & Jang 2014, eqs. (4.5)-(4.10), with the conventions of the documentat
 the contact model and its conventions): on the contact [x_l, x_r], with X = h s + m
 (h = (x_r - x_l)/2, m = (x_r + x_l)/2), p(X) = psi(s) solves
 
-    N12 mu_f psi(s) + (N11/pi) PV int psi(t)/(t - s) dt = v'(h s + m),     |s| < 1,
+    a psi(s) + (b/pi) PV int psi(t)/(t - s) dt = v'(h s + m),     |s| < 1,
     h int psi ds = P,
+
+a = N12 mu_f, b = N11 + M12 mu_f (M12 = 0 for an orthotropic material aligned with the frame:
+:class:`contact.SurfaceConstants`),
 
 with mu_f = -direction * mu (direction -1: the punch slides toward -X, friction traction on
 the half-space toward -X, trailing edge on the right).  A sharp corner makes its end singular
@@ -115,7 +118,8 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     direction : {-1, +1}
         -1: the punch slides toward -X (trailing edge on the right, the paper's figures).
     method : {"numeric", "closed_form"}
-        "closed_form" evaluates the corrected closed forms (the four punches only).
+        "closed_form" evaluates the corrected closed forms (the four punches only, on a
+        material without the couplings M12, M21, M22 of :class:`SurfaceConstants`).
     n : int, optional
         Jacobi coefficients per zone; by default chosen adaptively until two successive n
         agree to tol.
@@ -144,9 +148,10 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
 
     Notes
     -----
-    On each zone the pressure solves N12 mu_f p + (N11/pi) PV int p(t)/(t - X) dt = v'(X)
-    (module docstring), by :func:`sie.solve` on the union of the zones; free ends are found
-    from the loads, the solvability condition of index -1 zones and the common rigid face.
+    On each zone the pressure solves a p + (b/pi) PV int p(t)/(t - X) dt = v'(X),
+    a = N12 mu_f, b = N11 + M12 mu_f (module docstring; :class:`SurfaceConstants`), by
+    :func:`sie.solve` on the union of the zones; free ends are found from the loads, the
+    solvability condition of index -1 zones and the common rigid face.
 
     References
     ----------
@@ -329,21 +334,40 @@ def _collections_deferred():
 
 def _signed_friction(const, friction, direction) -> float:
     """mu_f = -direction * friction (0 without friction: no friction terms), refused where
-    it makes the coefficient N12 mu_f of the equation so large against N11 that an end
-    exponent of the pressure rounds to -1 or 1 (:func:`sie.exponents.check_coefficients`)."""
+    the coefficients a = N12 mu_f, b = N11 + M12 mu_f of the equation
+    (:meth:`SurfaceConstants.equation_coefficients`) leave b >= 0 (the surface outside the
+    contact no longer sinks under the pressure: dv/dX = b Hc[p] there) or make a so large
+    against b that an end exponent of the pressure rounds to -1 or 1
+    (:func:`sie.exponents.check_coefficients`)."""
     if friction == 0.0:
         return 0.0
     mu_f = -direction * friction
+    a, b = const.equation_coefficients(mu_f)
+    toward = "-X" if direction < 0 else "+X"
+    if not b < 0.0:
+        # b = N11 + M12 mu_f < 0 for -direction * M12 * friction < -N11
+        limit = -const.N11 / abs(const.M12)
+        raise FrictionError(
+            f"friction = {friction!r} sliding toward {toward} makes the coefficient "
+            f"b = N11 + M12 mu_f = {b:.6g} of Hc[p] in the contact equation >= 0 (N11 = "
+            f"{const.N11:.6g}, M12 = {const.M12:.6g}, mu_f = {mu_f!r}): the surface would no "
+            f"longer sink under the pressure.  This material at this speed stops sinking at "
+            f"friction = abs(N11 / M12) = {limit:.6g} in this direction (allowed: friction "
+            f"below that; sliding toward {'+X' if direction < 0 else '-X'} the coupling M12 "
+            f"makes b more negative)") from None
     try:
-        check_coefficients(const.N12 * mu_f, const.N11)
+        check_coefficients(a, b)
     except sie.InvalidCoefficientError:
-        limit = abs(const.N11 / const.N12) / MIN_B_OVER_A
+        # |b| >= MIN_B_OVER_A |a|: friction (MIN_B_OVER_A |N12| + M12 mu_f / friction) < -N11
+        rate = MIN_B_OVER_A * abs(const.N12) + const.M12 * (mu_f / friction)
+        allowed = (f"friction below about {-const.N11 / rate:.3g} for this material at this "
+                   f"speed and direction" if rate > 0.0 else
+                   "a friction that resolves the exponents in double precision")
         raise FrictionError(
             f"friction = {friction!r} puts an end exponent of the pressure within rounding "
-            f"of -1 or 1 in double precision (|N12 friction / N11| = "
-            f"{abs(const.N12 * friction / const.N11):.3g}): its singularity is not "
-            f"integrable there (allowed: friction below about {limit:.3g} for this material "
-            f"at this speed; Coulomb coefficients of real materials are below ~10)") from None
+            f"of -1 or 1 in double precision (|a / b| = |N12 mu_f / (N11 + M12 mu_f)| = "
+            f"{abs(a / b):.3g}): its singularity is not integrable there (allowed: "
+            f"{allowed}; Coulomb coefficients of real materials are below ~10)") from None
     return mu_f
 
 
@@ -366,13 +390,14 @@ class _Problem:
     @property
     def a(self) -> float:
         """N12 mu_f, the coefficient of p in the equation (0 without friction: no friction
-        terms)."""
-        return self.const.N12 * self.mu_f if self.mu_f != 0.0 else 0.0
+        terms; :meth:`SurfaceConstants.equation_coefficients`)."""
+        return self.const.equation_coefficients(self.mu_f)[0]
 
     @property
     def b(self) -> float:
-        """N11, the coefficient of the Hilbert transform of p."""
-        return self.const.N11
+        """N11 + M12 mu_f, the coefficient of the Hilbert transform of p (N11 without
+        friction, and for a material with the mirror plane X = 0, M12 = 0)."""
+        return self.const.equation_coefficients(self.mu_f)[1]
 
     def result(self, load, **fields) -> ContactResult:
         """The ContactResult of this problem at ``load`` (``fields``: the rest)."""
@@ -644,6 +669,13 @@ def _closed_form_result(problem, load):
         raise ContactInputError(
             f'method="closed_form" exists only for {names}; use method="numeric" for '
             f'{type(punch).__name__}')
+    couplings = ", ".join(f"{name} = {getattr(const, name):.3g}"
+                          for name in ("M12", "M21", "M22") if getattr(const, name) != 0.0)
+    if couplings:
+        raise ContactInputError(
+            'method="closed_form" holds for a material with the mirror plane X = 0 (M12 = '
+            'M21 = M22 = 0, as an orthotropic material aligned with the frame); this '
+            f'material couples p and q at this speed ({couplings}): use method="numeric"')
     N = (const.N11, const.N12, const.N21, const.N22, problem.mu_f)
     c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)

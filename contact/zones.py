@@ -5,9 +5,11 @@ On L = [c_1, d_1] U ... U [c_J, d_J] the pressure solves (Zhou et al. 2014, eqs.
 conventions of the documentation, Theory: the contact model and its conventions: v the
 Y-displacement, q = mu_f p)
 
-    N12 mu_f p(X) + (N11/pi) PV int_L p(t)/(t - X) dt [+ int_L k(X, t) p(t) dt] = H'(X),
+    a p(X) + (b/pi) PV int_L p(t)/(t - X) dt [+ int_L k(X, t) p(t) dt] = H'(X),
 
-X in L, H the height of the punch face, k the regular kernel of a layered material
+a = N12 mu_f, b = N11 + M12 mu_f (:meth:`contact.SurfaceConstants.equation_coefficients`;
+M12 = 0 for an orthotropic material aligned with the frame), X in L, H the height of the
+punch face, k the regular kernel of a layered material
 (:mod:`contact.kernel`; none for a homogeneous half-space).  Each zone end is **free** (p bounded, -> 0; its position is
 unknown) or a **corner** (an edge of the face: p singular, the position fixed).  The unknowns
 are the free ends and, for a zone with two corners (index 1), the load it carries; the
@@ -16,9 +18,10 @@ equations are
 * per zone with two free ends (index -1): the solvability condition of the equation on that
   zone (``sie.Solution.consistency``: the weighted mean of the right-hand side left over),
 * per gap between neighbouring zones: both touch the same rigid face.  The gap
-  g = H - v - v_0 has g' = H' - N11 Hc[p] off L (q = 0 there), and with
+  g = H - v - v_0 has g' = H' - b Hc[p] off L (p = q = 0 there: dv/dX = N11 Hc[p] +
+  M12 Hc[q] = b Hc[p]), and with
   V(X) = (1/pi) int_L p(t) log|X - t| dt (dV/dX = -Hc[p], ``sie.Solution.log_potential``)
-      g(c_{j+1}) - g(d_j) = H(c_{j+1}) - H(d_j) + N11 (V(c_{j+1}) - V(d_j))
+      g(c_{j+1}) - g(d_j) = H(c_{j+1}) - H(d_j) + b (V(c_{j+1}) - V(d_j))
                             [- int_L (K(c_{j+1}, t) - K(d_j, t)) p(t) dt] = 0,
   (K the antiderivative of k in X),
 * the total load: int_L p = P.
@@ -99,7 +102,7 @@ class ZoneEquations:
     """The equations of a set of zones for one face, material, friction and load.
 
     ``slope``: H'(X), vectorised; ``rise(x0, x1)``: H(x1) - H(x0); ``breaks``: X where H' or a
-    derivative jumps; ``a`` = N12 mu_f, ``b`` = N11; ``n``: Jacobi coefficients per zone;
+    derivative jumps; ``a`` = N12 mu_f, ``b`` = N11 + M12 mu_f; ``n``: Jacobi coefficients per zone;
     ``n_max``: how far the continuation may raise n to resolve its states (None: n is
     fixed, as the user gave it); ``kernel``: the regular kernel of a layered material
     (:class:`contact.kernel.ContactKernel`), None for a homogeneous half-space."""
