@@ -516,20 +516,26 @@ def cmd_constants(args) -> int:
 
 
 def format_constants(material, speeds, source: str) -> str:
-    """N11, N12, N21, N22 (and eta1 eta2, eta1 + eta2, "-" for a material without them:
-    :class:`contact.SurfaceConstants`) at each speed, and c_R; ``source`` names the
-    material."""
+    """N11, N12, N21, N22 (M12, M21, M22 where a material has them; eta1 eta2, eta1 + eta2,
+    "-" for a material without them: :class:`contact.SurfaceConstants`) at each speed, and
+    c_R; ``source`` names the material."""
     c_R = contact.rayleigh_speed(material)
-    header = ("c", "N11", "N12", "N21", "N22", "eta1*eta2", "eta1+eta2")
+    ks = [contact.surface_constants(material, c) for c in speeds]
+    # the couplings of a material that is not an aligned orthotropic one, where it has them
+    coupled = any(v != 0.0 for k in ks for v in (k.M12, k.M21, k.M22))
+    names = ("N11", "N12", "N21", "N22") + (("M12", "M21", "M22") if coupled else ())
+    header = ("c",) + names + ("eta1*eta2", "eta1+eta2")
     rows = []
-    for c in speeds:
-        k = contact.surface_constants(material, c)
+    for c, k in zip(speeds, ks):
         rows.append((f"{c:g}", *("-" if v is None else f"{v:.12g}"
-                                 for v in (k.N11, k.N12, k.N21, k.N22, k.eta_product,
-                                           k.eta_sum))))
+                                 for v in [getattr(k, n) for n in names]
+                                 + [k.eta_product, k.eta_sum])))
     widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(header)]
-    lines = [f"Surface constants (dv/dX = N12 q + N11 Hc[p], sigma_XX = N21 p + N22 Hc[q]); "
-             f"material: {source}; N11, N12 in 1/(stress unit)",
+    relations = ("dv/dX = N12 q + N11 Hc[p] + M12 Hc[q], sigma_XX = N21 p + N22 Hc[q] + "
+                 "M21 Hc[p] + M22 q" if coupled else
+                 "dv/dX = N12 q + N11 Hc[p], sigma_XX = N21 p + N22 Hc[q]")
+    lines = [f"Surface constants ({relations}); material: {source}; N11, N12"
+             f"{', M12' if coupled else ''} in 1/(stress unit)",
              f"Rayleigh speed c_R = {c_R!r} (admissible: 0 <= c < c_R)",
              "  ".join(h.rjust(w) for h, w in zip(header, widths))]
     lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]

@@ -14,10 +14,11 @@ from sie import N_MAX
 from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
                               closed_form_kinds, import_callable)
 
-from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, FIELDS, FREE, GRID_KEYS, MATERIAL_KEYS,
-                   METHODS, MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS,
+from .spec import (DEFAULT_FIELDS, DEFAULT_SCENE_TOML, ENGINEERING_KEYS, FIELDS, FREE,
+                   GRID_KEYS, MATERIAL_KEYS, MATERIAL_KINDS, METHODS, MOTION_KEYS, MaterialSpec, NUMERICS_KEYS, Numerics, OUTPUT_KEYS,
                    PIECE_KEYS, PRESETS, PunchSpec, SECTIONS, SUBSURFACE_MAX_POINTS,
-                   SUBSURFACE_POINTS, Scene, SceneError, SubsurfaceGrid, XGrid, X_KEYS)
+                   ROTATION_KEYS, SUBSURFACE_POINTS, Scene, SceneError, SubsurfaceGrid, XGrid,
+                   X_KEYS, anisotropic_material)
 
 
 # --------------------------------------------------------------------------
@@ -139,11 +140,24 @@ class _Parser:
             raise self.error("material.arguments", "given without material.factory",
                              'factory = "module:function" with arguments = { ... } (its '
                              "keyword arguments)")
+        kind = table.get("kind", "orthotropic")
+        if kind not in MATERIAL_KINDS:
+            close = difflib.get_close_matches(str(kind), MATERIAL_KINDS, n=1)
+            guess = f"; did you mean {close[0]!r}?" if close else ""
+            raise self.error("material.kind", f"unknown kind {kind!r}{guess}",
+                             " | ".join(MATERIAL_KINDS))
         rho = None
         if "rho" in table:
             rho = self.number("material.rho", table["rho"], "a density > 0")
             if rho <= 0:
                 raise self.error("material.rho", f"must be > 0, got {rho!r}", "a density > 0")
+        if kind == "anisotropic":
+            return self.anisotropic(table, rho)
+        aniso = [k for k in ("C", "engineering", "rotation") if k in table]
+        if aniso:
+            raise self.error(f"material.{aniso[0]}", "is a key of an anisotropic material",
+                             'kind = "anisotropic" with C or engineering (and rotation), or '
+                             "an orthotropic material's C11, C12, C22, C33 or preset")
         stiff = [k for k in ("C11", "C12", "C22", "C33") if k in table]
         if "preset" in table:
             preset = table["preset"]
@@ -168,6 +182,68 @@ class _Parser:
         except contact.MaterialError as exc:
             raise self.error("material", str(exc)) from None
         return MaterialSpec(*C, rho=rho)
+
+    def anisotropic(self, table: dict, rho) -> MaterialSpec:
+        """``kind = "anisotropic"``: ``C`` (6x6, Voigt order XX, YY, ZZ, YZ, ZX, XY) or
+        ``engineering`` = {E1, E2, E3, nu12, nu13, nu23, G12, G13, G23}, and ``rotation``:
+        a table {axis, degrees} or a list of them, applied in order."""
+        allowed = ('C = [[...6 numbers...] x 6] (the stiffness, Voigt order XX, YY, ZZ, YZ, '
+                   "ZX, XY) or engineering = { E1, E2, E3, nu12, nu13, nu23, G12, G13, G23 }, "
+                   'with rotation = { axis = "x" | "y" | "z", degrees = ... } (or a list of '
+                   "them) and rho")
+        other = [k for k in table if k not in ("kind", "C", "engineering", "rotation", "rho")]
+        if other:
+            raise self.error(f"material.{other[0]}", "is not a key of an anisotropic material",
+                             allowed)
+        given = [k for k in ("C", "engineering") if k in table]
+        if len(given) != 1:
+            raise self.error("material", "needs exactly one of C and engineering" if given
+                             else "needs C or engineering", allowed)
+        C = engineering = None
+        if "C" in table:
+            rows = table["C"]
+            if not (isinstance(rows, list) and len(rows) == 6
+                    and all(isinstance(r, list) and len(r) == 6 for r in rows)):
+                raise self.error("material.C", "must be a 6 x 6 array (six lists of six "
+                                 "numbers)", allowed)
+            C = tuple(tuple(self.number(f"material.C[{i}][{j}]", v, "a number (stiffness)")
+                            for j, v in enumerate(row)) for i, row in enumerate(rows))
+        else:
+            eng = table["engineering"]
+            if not isinstance(eng, dict):
+                raise self.error("material.engineering", f"must be a table, got "
+                                 f"{_describe(eng)}", allowed)
+            self.check_keys(eng, ENGINEERING_KEYS, "material.engineering")
+            missing = [k for k in ENGINEERING_KEYS if k not in eng]
+            if missing:
+                raise self.error(f"material.engineering.{missing[0]}", "is missing",
+                                 "all of " + ", ".join(ENGINEERING_KEYS))
+            engineering = tuple((k, self.number(f"material.engineering.{k}", eng[k]))
+                                for k in ENGINEERING_KEYS)
+        rotation = table.get("rotation", [])
+        turns = rotation if isinstance(rotation, list) else [rotation]
+        parsed = []
+        for k, turn in enumerate(turns):
+            key = "material.rotation" + (f"[{k}]" if isinstance(rotation, list) else "")
+            if not isinstance(turn, dict):
+                raise self.error(key, f"must be a table, got {_describe(turn)}",
+                                 '{ axis = "x" | "y" | "z", degrees = ... }')
+            self.check_keys(turn, ROTATION_KEYS, key)
+            axis = turn.get("axis")
+            if axis not in ("x", "y", "z"):
+                raise self.error(f"{key}.axis", f"must be \"x\", \"y\" or \"z\", got "
+                                 f"{_describe(axis)}", "the problem's axis X (sliding), Y "
+                                 "(the surface's normal) or Z (the punch's generators)")
+            if "degrees" not in turn:
+                raise self.error(f"{key}.degrees", "is missing", "the angle in degrees")
+            parsed.append((axis, self.number(f"{key}.degrees", turn["degrees"], "an angle in "
+                                             "degrees")))
+        try:
+            anisotropic_material(C, engineering, tuple(parsed), rho)
+        except contact.MaterialError as exc:
+            raise self.error("material", str(exc), allowed) from None
+        return MaterialSpec(rho=rho, kind="anisotropic", C=C, engineering=engineering,
+                            rotation=tuple(parsed))
 
     def material_factory(self, table: dict) -> MaterialSpec:
         """``factory = "module:function"`` (and ``arguments = { ... }``, its keyword
@@ -572,8 +648,8 @@ class _Parser:
     def check_cases(self, scene: Scene):
         """Every speed of the sweep below the Rayleigh speed, and every punch of the sweep
         buildable: each distinct value once (the punches: the product of the punch section's
-        swept keys), not once per case.  A factory's material has the characteristic roots
-        if ``"roots"`` is asked."""
+        swept keys), not once per case.  The material has the characteristic roots if
+        ``"roots"`` is asked."""
         material = scene.material.build()
         c_R = contact.rayleigh_speed(material)
         if "roots" in scene.fields and not callable(getattr(material, "characteristic_roots",
@@ -581,8 +657,8 @@ class _Parser:
             k = scene.fields.index("roots")
             raise self.error(f"outputs.fields[{k}]", f"the roots are the characteristic roots "
                              f"eta of an orthotropic material (Zhou et al. 2014, eq. (3.1)); "
-                             f"the material of {scene.material.factory} "
-                             f"({type(material).__name__}) has no characteristic_roots(c)",
+                             f"the material ({scene.material.describe()}) has no "
+                             f"characteristic_roots(c)",
                              "the other fields, or a material with characteristic_roots(c) "
                              "(contact.Orthotropic)")
         by_velocity = "velocity" in scene.motion

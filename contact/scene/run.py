@@ -431,13 +431,14 @@ def _sample(result, name: str, X: np.ndarray) -> np.ndarray:
 
 def speed_entry(material, speed: float, fields) -> dict:
     """The per-speed fields (roots and/or surface constants) asked among ``fields`` at one
-    speed: {field: value}.  ``eta_product`` and ``eta_sum`` are None (null, an empty cell)
-    for a material without them (:class:`contact.SurfaceConstants`); the roots need the
+    speed: {field: value}.  M12, M21, M22 are 0 for an aligned orthotropic material;
+    ``eta_product`` and ``eta_sum`` are None (null, an empty cell) for a material without them (:class:`contact.SurfaceConstants`); the roots need the
     material's ``characteristic_roots(c)`` (the scene's parser checks that it has it)."""
     out = {}
     if "constants" in fields:
         k = contact.surface_constants(material, speed)
         out["constants"] = {"N11": k.N11, "N12": k.N12, "N21": k.N21, "N22": k.N22,
+                            "M12": k.M12, "M21": k.M21, "M22": k.M22,
                             "rayleigh_speed": k.rayleigh_speed,
                             "eta_product": k.eta_product, "eta_sum": k.eta_sum}
     if "roots" in fields:

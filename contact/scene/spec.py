@@ -17,7 +17,13 @@ from contact.registry import KINDS, import_callable
 # the vocabulary of a scene
 # --------------------------------------------------------------------------
 SECTIONS = ("title", "material", "punch", "motion", "outputs", "numerics")
-MATERIAL_KEYS = ("preset", "C11", "C12", "C22", "C33", "rho", "factory", "arguments")
+MATERIAL_KEYS = ("kind", "preset", "C11", "C12", "C22", "C33", "rho", "factory", "arguments",
+                 "C", "engineering", "rotation")
+MATERIAL_KINDS = ("orthotropic", "anisotropic")
+#: The engineering constants of an orthotropic material in its own axes 1, 2, 3
+#: (:meth:`contact.Anisotropic.from_engineering`).
+ENGINEERING_KEYS = ("E1", "E2", "E3", "nu12", "nu13", "nu23", "G12", "G13", "G23")
+ROTATION_KEYS = ("axis", "degrees")
 PRESETS = {"zhou2014": contact.zhou2014}
 PIECE_KEYS = ("from", "to", "coefficients")
 MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
@@ -140,14 +146,27 @@ class MaterialSpec:
     a case can travel to another process or a Dask worker).
 
     Either the stiffnesses of an orthotropic material, Zhou et al. 2014, eq. (2.2) (and the
-    density, if given), after a preset is expanded; or a user's ``factory``, a
-    "module:function" called with ``arguments`` that returns any object with the methods
-    of :class:`contact.Material`.
+    density, if given), after a preset is expanded; or an anisotropic material
+    (``kind = "anisotropic"``: its 6x6 stiffness, or the engineering constants of an
+    orthotropic one, turned by rotations); or a user's ``factory``, a "module:function"
+    called with ``arguments`` that returns any object with the methods of
+    :class:`contact.Material`.
 
     Attributes
     ----------
     C11, C12, C22, C33 : float or None
-        The stiffnesses (None with a factory).
+        The stiffnesses of an orthotropic material (None otherwise).
+    kind : str
+        "orthotropic" or "anisotropic" (a factory's material: "orthotropic", unused).
+    C : tuple of tuples or None
+        The 6x6 stiffness in Voigt order (XX, YY, ZZ, YZ, ZX, XY) of an anisotropic material
+        given by it.
+    engineering : tuple of (key, value) or None
+        The engineering constants (:data:`ENGINEERING_KEYS`) of an anisotropic material
+        given by them.
+    rotation : tuple of (axis, degrees)
+        Rotations of an anisotropic material's axes, applied in order (each active, about
+        the problem's axis "x", "y" or "z": :meth:`contact.Anisotropic.rotated`).
     rho : float or None
         The density (None with a factory: the factory's material converts velocities).
     preset : str or None
@@ -168,11 +187,18 @@ class MaterialSpec:
     factory: str | None = None
     arguments: tuple = ()
     base_dir: str | None = None
+    kind: str = "orthotropic"
+    C: tuple | None = None
+    engineering: tuple | None = None
+    rotation: tuple = ()
 
     def build(self):
-        """The material: a :class:`contact.Orthotropic`, or what the factory returns."""
+        """The material: a :class:`contact.Orthotropic`, a :class:`contact.Anisotropic`, or
+        what the factory returns."""
         if self.factory is not None:
             return import_callable(self.factory, self.base_dir)(**dict(self.arguments))
+        if self.kind == "anisotropic":
+            return anisotropic_material(self.C, self.engineering, self.rotation, self.rho)
         return contact.Orthotropic(self.C11, self.C12, self.C22, self.C33, rho=self.rho)
 
     def describe(self) -> str:
@@ -180,6 +206,12 @@ class MaterialSpec:
         if self.factory is not None:
             args = ", ".join(f"{k}={v!r}" for k, v in self.arguments)
             return f"{self.factory}({args})"
+        if self.kind == "anisotropic":
+            given = ("engineering constants " + ", ".join(f"{k} = {v:.10g}"
+                                                          for k, v in self.engineering)
+                     if self.engineering is not None else "C (6x6, Voigt)")
+            turns = "".join(f", turned {d:g} deg about {a}" for a, d in self.rotation)
+            return f"anisotropic ({given}{turns})"
         return (f"{self.preset or 'custom'} (C11, C12, C22, C33 = {self.C11:.10g}, "
                 f"{self.C12:.10g}, {self.C22:.10g}, {self.C33:.10g})")
 
@@ -188,9 +220,32 @@ class MaterialSpec:
         if self.factory is not None:
             return {"factory": self.factory,
                     "arguments": {k: _json_value(v) for k, v in self.arguments}}
+        if self.kind == "anisotropic":
+            out = {"kind": "anisotropic"}
+            if self.C is not None:
+                out["C"] = [list(row) for row in self.C]
+            else:
+                out["engineering"] = dict(self.engineering)
+            out["rotation"] = [{"axis": a, "degrees": d} for a, d in self.rotation]
+            out["rho"] = self.rho
+            return out
         out = {"preset": self.preset} if self.preset else {}
         out.update(C11=self.C11, C12=self.C12, C22=self.C22, C33=self.C33, rho=self.rho)
         return out
+
+
+def anisotropic_material(C, engineering, rotation, rho):
+    """A :class:`contact.Anisotropic` from a scene's ``C`` (6x6, Voigt) or ``engineering``
+    constants (pairs), turned by each (axis, degrees) of ``rotation`` in order (an active
+    rotation about the problem's axis: ``scipy.spatial.transform.Rotation.from_euler``)."""
+    from scipy.spatial.transform import Rotation
+    if C is not None:
+        m = contact.Anisotropic(np.array(C, dtype=float), rho)
+    else:
+        m = contact.Anisotropic.from_engineering(**dict(engineering), rho=rho)
+    for axis, degrees in rotation:
+        m = m.rotated(Rotation.from_euler(axis, degrees, degrees=True))
+    return m
 
 
 @dataclass(frozen=True)

@@ -19,9 +19,10 @@ Columns, in this order (a group only when its field is asked):
   case with fewer zones leaves the columns of the missing ones empty;
 * ``"subsurface"``: for q in ``max_shear``, ``max_tension``: ``q`` (the value), ``q_X``,
   ``q_Y``, ``q_depth``, ``q_half_width``, ``q_depth_over_a``;
-* ``"constants"``: ``N11``, ``N12``, ``N21``, ``N22``, ``rayleigh_speed``, ``eta_product``,
-  ``eta_sum`` (the last two empty for a material without them: a scene's
-  ``[material] factory`` may give one); ``"roots"``: ``root{k}_real``, ``root{k}_imag``,
+* ``"constants"``: ``N11``, ``N12``, ``N21``, ``N22``, ``M12``, ``M21``, ``M22`` (0 for an
+  aligned orthotropic material), ``rayleigh_speed``, ``eta_product``, ``eta_sum`` (the last
+  two empty for a material without them: an anisotropic one, or a scene's
+  ``[material] factory``); ``"roots"``: ``root{k}_real``, ``root{k}_imag``,
   k = 1..4 (eta1, -eta1, eta3, -eta3);
 * the solver's diagnostics, always: ``n``, ``residual``, ``load_check``.
 
@@ -75,7 +76,8 @@ def case_text(res) -> CaseText | None:
 
 
 SUBSURFACE_COLUMNS = ("value", "X", "Y", "depth", "half_width", "depth_over_a")
-CONSTANTS_COLUMNS = ("N11", "N12", "N21", "N22", "rayleigh_speed", "eta_product", "eta_sum")
+CONSTANTS_COLUMNS = ("N11", "N12", "N21", "N22", "M12", "M21", "M22", "rayleigh_speed",
+                     "eta_product", "eta_sum")
 DIAGNOSTICS_COLUMNS = ("n", "residual", "load_check")
 PANDAS_HINT = "pip install 'sie-contact[pandas]'"
 

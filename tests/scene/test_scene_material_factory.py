@@ -141,7 +141,8 @@ def test_a_factory_material_gives_the_contact_of_the_material_itself(where):
         assert np.array_equal(values, ref.pressure(x))
         k = ref.constants
         assert case.entry["constants"] == {"N11": k.N11, "N12": k.N12, "N21": k.N21,
-                                           "N22": k.N22, "rayleigh_speed": k.rayleigh_speed,
+                                           "N22": k.N22, "M12": 0.0, "M21": 0.0, "M22": 0.0,
+                                           "rayleigh_speed": k.rayleigh_speed,
                                            "eta_product": k.eta_product, "eta_sum": k.eta_sum}
     assert s.echo()["material"] == {"factory": f"{MODULE}:wrapped",
                                     "arguments": {**PAPER}}
