@@ -210,6 +210,20 @@ class SurfaceResponse:
     Stroh, J. Math. Phys. 41 (1962) 77-103; Ting, Anisotropic Elasticity (1996), ch. 5, 7 and
     12; Barnett & Lothe, Proc. R. Soc. Lond. A 402 (1985) 135-152; the derivation in
     :mod:`contact.anisotropic`.
+
+    Examples
+    --------
+    The isotropic material at rest (G = 1, nu = 1/4): dv/dX = (1 - 2 nu)/(2G) q -
+    (1 - nu)/G Hc[p]; the local part is antisymmetric, the Hilbert part symmetric:
+
+    >>> import numpy as np, contact
+    >>> r = contact.Anisotropic.isotropic(2.5, 0.25).surface_response(0.0)
+    >>> round(r.N12, 12), round(r.N11, 12), r.M12
+    (0.25, -0.75, 0.0)
+    >>> bool(np.allclose(r.slope_local, -r.slope_local.T, rtol=0, atol=1e-15))
+    True
+    >>> r.surface_constants().equation_coefficients(0.2) == (0.2 * r.N12, r.N11)
+    True
     """
 
     c: float
@@ -484,7 +498,7 @@ class Anisotropic:
         ------
         MaterialError
             A modulus not finite or not > 0, a ratio not finite, or the compliance not
-            positive definite (for instance |nu12| >= sqrt(E1 / E2)).
+            positive definite (for instance abs(nu12) >= sqrt(E1 / E2)).
 
         Examples
         --------

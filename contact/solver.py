@@ -48,6 +48,9 @@ __all__ = ["solve", "solve_batch", "load_curve", "ContactResult", "LoadCurve", "
 _N_DEFAULT = 12
 _N_FOLLOW = 512    # the continuation raises n up to here to resolve its states (adaptive n)
 _N_MAX = 4096      # adaptive doubling stops here
+#: Couplings M12, M21, M22 below this fraction of their scale are rounding
+#: (:func:`_closed_form_result`).
+_ROUNDING = 64 * np.finfo(float).eps
 
 
 # --------------------------------------------------------------------------
@@ -119,7 +122,8 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         -1: the punch slides toward -X (trailing edge on the right, the paper's figures).
     method : {"numeric", "closed_form"}
         "closed_form" evaluates the corrected closed forms (the four punches only, on a
-        material without the couplings M12, M21, M22 of :class:`SurfaceConstants`).
+        material without the couplings M12, M21, M22 of :class:`SurfaceConstants`, to
+        rounding).
     n : int, optional
         Jacobi coefficients per zone; by default chosen adaptively until two successive n
         agree to tol.
@@ -669,13 +673,19 @@ def _closed_form_result(problem, load):
         raise ContactInputError(
             f'method="closed_form" exists only for {names}; use method="numeric" for '
             f'{type(punch).__name__}')
-    couplings = ", ".join(f"{name} = {getattr(const, name):.3g}"
-                          for name in ("M12", "M21", "M22") if getattr(const, name) != 0.0)
+    # couplings within rounding of 0 are 0: a material turned onto its own symmetry (a
+    # cubic crystal by 45 degrees, an isotropic one by any rotation) carries them at ~eps
+    scales = {"M12": abs(const.N11), "M21": max(abs(const.N21), abs(const.N22)),
+              "M22": max(abs(const.N21), abs(const.N22))}
+    couplings = ", ".join(f"{name} = {getattr(const, name):.3g}" for name, scale in
+                          scales.items() if abs(getattr(const, name)) > _ROUNDING * scale)
     if couplings:
         raise ContactInputError(
             'method="closed_form" holds for a material with the mirror plane X = 0 (M12 = '
             'M21 = M22 = 0, as an orthotropic material aligned with the frame); this '
-            f'material couples p and q at this speed ({couplings}): use method="numeric"')
+            f'material couples p and q at this speed ({couplings}; allowed: within '
+            f'{_ROUNDING:.2g} of N11, resp. of max(abs(N21), abs(N22))): use '
+            'method="numeric"')
     N = (const.N11, const.N12, const.N21, const.N22, problem.mu_f)
     c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
