@@ -47,7 +47,11 @@ class MaterialModes(Protocol):
     are a combination of the Cauchy transforms C_f(z) = (1/pi) int f(t) / (t - z) dt of the
     tractions f = p, q at complex points z with Im z > 0 that depend on the material
     (z_j = X - i eta_j Y for the characteristic roots eta_j of an orthotropic material:
-    :class:`contact.subsurface.HalfSpaceModes`).
+    :class:`contact.subsurface.HalfSpaceModes`; z = X + zeta Y for the Stroh roots of an
+    anisotropic one, or points about a cluster of nearly repeated roots:
+    :class:`contact.stroh_modes.StrohModes`).  The points are the modes' to choose: a
+    repeated root needs no derivative of the transform when the modes interpolate it from
+    points near the root.
 
     Attributes
     ----------
@@ -59,6 +63,11 @@ class MaterialModes(Protocol):
         from Cp (and Cq), lists of the transforms of p (and q) at each of the points, in
         the order ``points`` gave them; without Cq, q = q_ratio p (q = 0 when q_ratio is
         None).
+    out_of_plane : callable (Cp, Cq=None, q_ratio=None) -> (ndarray, ndarray, ndarray), optional
+        (sigma_zz, sigma_yz, sigma_xz) in generalised plane strain (Z along the punch's
+        generators), from the same transforms.  Modes without it (the plane model,
+        :class:`contact.subsurface.HalfSpaceModes`) leave those components None in
+        :class:`contact.subsurface.StressField`, and with them von Mises and Tresca.
 
     References
     ----------

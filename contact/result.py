@@ -342,7 +342,11 @@ class ContactResult:
         difference and mean; the coefficients and their derivation:
         :mod:`contact.subsurface`), smooth through repeated roots; q = mu_f p adds its
         column only when mu_f != 0.  On Y = 0 the stresses are the tractions
-        (sigma_YY = -p, sigma_XY = -q) and :meth:`sigma_xx`.
+        (sigma_YY = -p, sigma_XY = -q) and :meth:`sigma_xx`.  Where the modes give the
+        out-of-plane stresses (``out_of_plane``: :class:`contact.anisotropic.Anisotropic`,
+        generalised plane strain) they are filled in as well, on Y = 0 as the limit from
+        below (every point z of the modes tends to X, where the transform tends to
+        Hc[p](X) + i p(X)).
 
         Parameters
         ----------
@@ -353,7 +357,8 @@ class ContactResult:
         -------
         contact.subsurface.StressField
             sigma_xx, sigma_yy, sigma_xy (tension positive) and the derived max_shear,
-            principal stresses and max_tension.
+            principal stresses and max_tension; sigma_zz, sigma_yz, sigma_xz (and von_mises,
+            tresca) where the material's modes give them, else None.
 
         Raises
         ------
@@ -376,16 +381,21 @@ class ContactResult:
         >>> round(float(f.max_shear / p0), 3)
         0.3
         """
-        from .subsurface import StressField, modes_points, modes_stresses, stress_points
+        from .subsurface import (StressField, modes_out_of_plane, modes_points, modes_stresses,
+                                 stress_points)
         X, Y = stress_points(X, Y)
-        out = [np.zeros(X.shape) for _ in range(3)]
         below = Y < 0
+        modes = self._modes if np.any(below) or self._has_out_of_plane else None
+        out = [np.zeros(X.shape) for _ in range(6 if self._has_out_of_plane else 3)]
         if np.any(below):
-            modes = self._modes
             Xb, Yb = X[below], Y[below]
             Cp = [np.asarray(self.solution.cauchy(z), dtype=complex)
                   for z in modes_points(modes, Xb, Yb)]
-            for o, v in zip(out, modes_stresses(modes, Cp, None, self.mu_f or None, Xb, Yb)):
+            q_ratio = self.mu_f or None
+            values = modes_stresses(modes, Cp, None, q_ratio, Xb, Yb)
+            if len(out) == 6:
+                values += modes_out_of_plane(modes, Cp, None, q_ratio, Xb, Yb)
+            for o, v in zip(out, values):
                 o[below] = v
         if not np.all(below):
             on = ~below
@@ -393,7 +403,24 @@ class ContactResult:
             out[0][on] = self.sigma_xx(X[on])
             out[1][on] = -p
             out[2][on] = -self.mu_f * p
+            if len(out) == 6:
+                # the limit from below: every point z = X + zeta Y of the modes tends to X,
+                # where the transform tends to Hc[p](X) + i p(X) (Plemelj)
+                Xo = X[on]
+                C0 = self.hilbert_pressure(Xo) + 1j * p
+                n = len(modes.points(Xo, np.zeros_like(Xo)))
+                for o, v in zip(out[3:], modes_out_of_plane(modes, [C0] * n, None,
+                                                            self.mu_f or None, Xo, Y[on])):
+                    o[on] = v
         return StressField(X, Y, *out)
+
+    @property
+    def _has_out_of_plane(self) -> bool:
+        """Whether the material's modes give the out-of-plane stresses (``out_of_plane``,
+        :class:`contact.MaterialModes`); False without a material."""
+        if self.material is None:
+            return False
+        return callable(getattr(self._modes, "out_of_plane", None))
 
     @functools.cached_property
     def _modes(self):
@@ -404,8 +431,10 @@ class ContactResult:
         from .subsurface import half_space_modes
         return half_space_modes(self.material, self.constants.c)
 
-    def stress_extrema(self, region=None, grid=(81, 61)):
-        """Where the in-plane maximum shear and the largest tension (sigma_1) peak.
+    def stress_extrema(self, region=None, grid=(81, 61),
+                       quantities=("max_shear", "max_tension")):
+        """Where the in-plane maximum shear and the largest tension (sigma_1) peak (and the
+        von Mises stress or the Tresca shear, where asked for).
 
         A grid search over ``region`` then a polish of the best grid points
         (:func:`contact.subsurface.field_extrema`).
@@ -421,12 +450,18 @@ class ContactResult:
             spacing over the whole region is not missed; the largest of all is returned.
         grid : (int, int)
             Grid points in X and Y (>= 3 each).
+        quantities : sequence of str
+            Which quantities of :class:`contact.subsurface.StressField` to search for:
+            some of "max_shear", "max_tension", "von_mises", "tresca" (the last two need a
+            material whose modes give the out-of-plane stresses, e.g.
+            :class:`contact.anisotropic.Anisotropic`).
 
         Returns
         -------
         contact.subsurface.StressExtrema
-            ``max_shear`` and ``max_tension``: value, X, Y, depth and depth / a with a the
-            half-width of the zone nearest to X.
+            For each quantity asked for (``max_shear``, ``max_tension``, ``von_mises``,
+            ``tresca``; None for those not asked for): value, X, Y, depth and depth / a with
+            a the half-width of the zone nearest to X.
 
         Raises
         ------
@@ -434,9 +469,24 @@ class ContactResult:
             The region reaches Y = 0 at a singular (corner) end: the stresses are infinite
             there (use the zones' SIFs, or a region with Y_max < 0).
         ContactInputError
-            A region that is empty, not finite or above Y = 0; a grid below 3 x 3.
+            A region that is empty, not finite or above Y = 0; a grid below 3 x 3;
+            ``quantities`` empty or naming another quantity.
+        MaterialError
+            "von_mises" or "tresca" for a material whose modes give only the in-plane
+            stresses (:class:`contact.Orthotropic`).
         """
-        from .subsurface import StressExtrema, UnboundedStressError, field_extrema
+        from .errors import MaterialError
+        from .subsurface import (StressExtrema, UnboundedStressError, extremum_quantities,
+                                 field_extrema)
+        names = extremum_quantities(quantities)
+        three_d = [name for name in names if name in ("von_mises", "tresca")]
+        if three_d and not self._has_out_of_plane:
+            raise MaterialError(
+                f"{three_d[0]} needs the out-of-plane stresses sigma_zz, sigma_yz, sigma_xz, "
+                f"which the modes of {type(self.material).__name__} do not give (allowed "
+                f"there: quantities 'max_shear', 'max_tension'; von Mises and Tresca need a "
+                f"material whose half_space_modes(c) has out_of_plane, e.g. "
+                f"contact.anisotropic.Anisotropic)")
         xl, xr = self.zones[0].ends[0], self.zones[-1].ends[1]
         a = self.zone_scale
         if region is None:
@@ -464,12 +514,14 @@ class ContactResult:
         def half_width_at(X):
             return min(self.zones, key=lambda z: max(z.ends[0] - X, X - z.ends[1], 0.0)).width / 2
 
-        found = [field_extrema(self.stress, reg, half_width_at, (nx, ny)) for reg in checked]
+        found = [field_extrema(self.stress, reg, half_width_at, (nx, ny), names)
+                 for reg in checked]
         if len(found) == 1:
             return found[0]
-        return StressExtrema(max((f.max_shear for f in found), key=lambda e: e.value),
-                             max((f.max_tension for f in found), key=lambda e: e.value),
-                             checked[0])
+        best = {name: max((getattr(f, name) for f in found), key=lambda e: e.value)
+                for name in names}
+        return StressExtrema(best.get("max_shear"), best.get("max_tension"), checked[0],
+                             von_mises=best.get("von_mises"), tresca=best.get("tresca"))
 
 
 def _grid(grid) -> tuple:

@@ -85,7 +85,8 @@ from .errors import (CauchyTransformError, ContactInputError, FrictionError, Mat
 from .protocol import call, check_material, describe_call
 
 __all__ = ["HalfSpaceModes", "StressField", "StressExtrema", "Extremum", "half_space_stress",
-           "half_space_modes", "modes_points", "modes_stresses", "field_extrema",
+           "half_space_modes", "modes_points", "modes_stresses", "modes_out_of_plane",
+           "field_extrema", "EXTREMUM_QUANTITIES",
            "StressPointError", "UnboundedStressError", "CauchyTransformError"]
 
 #: |delta| below this fraction of eta_m: the repeated-root form (interpolation in delta^2)
@@ -94,7 +95,7 @@ _NEAR = 1e-3
 
 @dataclass(frozen=True)
 class StressField:
-    """Plane stresses at points (X, Y) of the half-space (tension positive).
+    """Stresses at points (X, Y) of the half-space (tension positive).
 
     Returned by :meth:`contact.ContactResult.stress` and :func:`half_space_stress`.
 
@@ -104,6 +105,17 @@ class StressField:
         The points (Y <= 0), broadcast to one shape.
     sigma_xx, sigma_yy, sigma_xy : ndarray
         The in-plane stress components at the points.
+    sigma_zz, sigma_yz, sigma_xz : ndarray or None
+        The out-of-plane components (generalised plane strain, Z along the punch's
+        generators), where the material's modes give them (an ``out_of_plane`` method,
+        :class:`contact.MaterialModes`: :class:`contact.anisotropic.Anisotropic`); None for
+        the plane model (:class:`contact.Orthotropic`, which has no C13, C23).
+    von_mises : ndarray
+        sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
+        + 3 (s_xy^2 + s_yz^2 + s_xz^2)); needs the out-of-plane components.
+    tresca : ndarray
+        (s_1 - s_3) / 2, the largest shear stress over all planes, from the three principal
+        stresses; needs the out-of-plane components.
     mean : ndarray
         (sigma_xx + sigma_yy) / 2.
     max_shear : ndarray
@@ -141,6 +153,70 @@ class StressField:
     sigma_xx: np.ndarray
     sigma_yy: np.ndarray
     sigma_xy: np.ndarray
+    sigma_zz: np.ndarray | None = None
+    sigma_yz: np.ndarray | None = None
+    sigma_xz: np.ndarray | None = None
+
+    @property
+    def has_out_of_plane(self) -> bool:
+        """Whether the out-of-plane components are known (the material's modes give them)."""
+        return self.sigma_zz is not None
+
+    def _need_out_of_plane(self, what: str) -> None:
+        if not self.has_out_of_plane:
+            raise MaterialError(
+                f"{what} needs the out-of-plane stresses sigma_zz, sigma_yz, sigma_xz, which "
+                f"this material's modes do not give (the plane model contact.Orthotropic has "
+                f"no C13, C23; allowed: a material whose half_space_modes(c) has "
+                f"out_of_plane, e.g. contact.anisotropic.Anisotropic); the in-plane "
+                f"max_shear and max_tension are available")
+
+    @property
+    def von_mises(self) -> np.ndarray:
+        """The von Mises equivalent stress
+        sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
+        + 3 (s_xy^2 + s_yz^2 + s_xz^2)), the yield criterion of von Mises (Johnson 1985,
+        Sec. 6.1).
+
+        Raises
+        ------
+        MaterialError
+            The out-of-plane components are not known (:attr:`sigma_zz` is None).
+        """
+        self._need_out_of_plane("von_mises")
+        sxx, syy, szz = self.sigma_xx, self.sigma_yy, self.sigma_zz
+        return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2)
+                       + 3.0 * (self.sigma_xy ** 2 + self.sigma_yz ** 2 + self.sigma_xz ** 2))
+
+    @property
+    def principal_3d(self) -> tuple:
+        """(s_1, s_2, s_3), s_1 >= s_2 >= s_3: the eigenvalues of the full stress tensor.
+
+        Raises
+        ------
+        MaterialError
+            The out-of-plane components are not known (:attr:`sigma_zz` is None).
+        """
+        self._need_out_of_plane("principal_3d")
+        S = np.stack([np.stack([self.sigma_xx, self.sigma_xy, self.sigma_xz], -1),
+                      np.stack([self.sigma_xy, self.sigma_yy, self.sigma_yz], -1),
+                      np.stack([self.sigma_xz, self.sigma_yz, self.sigma_zz], -1)], -2)
+        w = np.linalg.eigvalsh(S)
+        return w[..., 2], w[..., 1], w[..., 0]
+
+    @property
+    def tresca(self) -> np.ndarray:
+        """(s_1 - s_3) / 2, the largest shear stress over all planes (the yield criterion of
+        Tresca; Johnson 1985, Sec. 6.1), from the principal stresses of the full tensor.
+
+        Raises
+        ------
+        MaterialError
+            The out-of-plane components are not known (:attr:`sigma_zz` is None).
+        """
+        self._need_out_of_plane("tresca")
+        s1, _, s3 = self.principal_3d
+        return 0.5 * (s1 - s3)
 
     @property
     def mean(self) -> np.ndarray:
@@ -433,17 +509,42 @@ def modes_stresses(modes, Cp, Cq, q_ratio, X, Y) -> tuple:
         Anything else, or an exception inside ``stresses`` (chained), naming ``stresses``
         of the modes' class and the first point at fault.
     """
-    out = call(modes, "stresses", Cp, Cq, q_ratio)
-    where = (f"{type(modes).__name__}.stresses(Cp, Cq, q_ratio) (the modes of "
+    return _checked_triple(modes, "stresses", ("sigma_xx", "sigma_yy", "sigma_xy"), Cp, Cq,
+                           q_ratio, X, Y)
+
+
+def modes_out_of_plane(modes, Cp, Cq, q_ratio, X, Y):
+    """``modes.out_of_plane(Cp, Cq, q_ratio)`` (the optional method of
+    :class:`contact.MaterialModes`), checked as :func:`modes_stresses`:
+    (sigma_zz, sigma_yz, sigma_xz), three real arrays of the shape of X and Y; None when the
+    modes have no ``out_of_plane`` (the plane model).
+
+    Raises
+    ------
+    MaterialError
+        What it returns is not three such arrays, or it raises (chained).
+    """
+    if not callable(getattr(modes, "out_of_plane", None)):
+        return None
+    return _checked_triple(modes, "out_of_plane", ("sigma_zz", "sigma_yz", "sigma_xz"), Cp,
+                           Cq, q_ratio, X, Y)
+
+
+def _checked_triple(modes, method, names, Cp, Cq, q_ratio, X, Y) -> tuple:
+    """``modes.<method>(Cp, Cq, q_ratio)`` as three real arrays of the points' shape, finite
+    wherever the transforms are, else MaterialError naming the method and the first point
+    at fault."""
+    out = call(modes, method, Cp, Cq, q_ratio)
+    where = (f"{type(modes).__name__}.{method}(Cp, Cq, q_ratio) (the modes of "
              f"material.half_space_modes(c))")
     if isinstance(out, np.ndarray) or not isinstance(out, (list, tuple)) or len(out) != 3:
-        raise MaterialError(f"{where} must return (sigma_xx, sigma_yy, sigma_xy), three real "
+        raise MaterialError(f"{where} must return ({', '.join(names)}), three real "
                             f"arrays, got {type(out).__name__}")
     given = np.ones(X.shape, dtype=bool)
     for C in list(Cp) + list(Cq or ()):
         given &= np.isfinite(C)
     checked = []
-    for name, v in zip(("sigma_xx", "sigma_yy", "sigma_xy"), out):
+    for name, v in zip(names, out):
         v = np.asarray(v)
         if v.shape != X.shape or v.dtype.kind not in "fiu":
             raise MaterialError(f"{where} must return real arrays of the points' shape "
@@ -563,7 +664,8 @@ def half_space_stress(material, c, X, Y, cauchy_p, cauchy_q=None,
     Cp = [_transform(cauchy_p, "cauchy_p", z, X, Y) for z in Z]
     Cq = None if cauchy_q is None else [_transform(cauchy_q, "cauchy_q", z, X, Y) for z in Z]
     sxx, syy, sxy = modes_stresses(modes, Cp, Cq, q_ratio, X, Y)
-    return StressField(X, Y, sxx, syy, sxy)
+    out_of_plane = modes_out_of_plane(modes, Cp, Cq, q_ratio, X, Y) or (None, None, None)
+    return StressField(X, Y, sxx, syy, sxy, *out_of_plane)
 
 
 def _transform(fn, name, z, X, Y) -> np.ndarray:
@@ -625,7 +727,7 @@ class Extremum:
     Attributes
     ----------
     quantity : str
-        "max_shear" or "max_tension" (:class:`StressField`).
+        "max_shear", "max_tension", "von_mises" or "tresca" (:class:`StressField`).
     value : float
         Its largest value there.
     X, Y : float
@@ -663,16 +765,22 @@ class Extremum:
 
 @dataclass(frozen=True)
 class StressExtrema:
-    """The largest in-plane maximum shear and the largest tension in a region.
+    """The largest in-plane maximum shear and the largest tension in a region (and, where
+    asked for, the largest von Mises stress and Tresca shear).
 
     Returned by :meth:`contact.ContactResult.stress_extrema`.
 
     Attributes
     ----------
-    max_shear, max_tension : Extremum
-        The largest in-plane maximum shear and the largest principal stress sigma_1.
+    max_shear, max_tension : Extremum or None
+        The largest in-plane maximum shear and the largest principal stress sigma_1 (None
+        only where ``quantities`` left them out).
     region : ((X_min, X_max), (Y_min, Y_max))
         The region searched.
+    von_mises, tresca : Extremum or None
+        The largest von Mises stress and the largest shear (s_1 - s_3) / 2 over all planes,
+        where asked for (``quantities``; they need a material whose modes give the
+        out-of-plane stresses, :attr:`StressField.sigma_zz`); else None.
 
     References
     ----------
@@ -694,13 +802,21 @@ class StressExtrema:
     >>> ex.max_tension.value < 1e-9 * p0
     True
     """
-    max_shear: Extremum
-    max_tension: Extremum
+    max_shear: Extremum | None
+    max_tension: Extremum | None
     region: tuple
+    von_mises: Extremum | None = None
+    tresca: Extremum | None = None
 
 
-def field_extrema(stress, region, half_width_at, grid=(81, 61)) -> StressExtrema:
-    """Largest max-shear and largest tension of ``stress(X, Y) -> StressField`` in ``region``.
+#: The quantities :func:`field_extrema` can search for (properties of :class:`StressField`).
+EXTREMUM_QUANTITIES = ("max_shear", "max_tension", "von_mises", "tresca")
+
+
+def field_extrema(stress, region, half_width_at, grid=(81, 61),
+                  quantities=("max_shear", "max_tension")) -> StressExtrema:
+    """Largest values of ``quantities`` of ``stress(X, Y) -> StressField`` in ``region``
+    (by default the max-shear and the tension).
 
     A grid search (``grid`` = (nx, ny) points, ends included), then each quantity's best
     grid maxima (the largest, and any other local maximum within 10 % of it) are polished by
@@ -716,13 +832,24 @@ def field_extrema(stress, region, half_width_at, grid=(81, 61)) -> StressExtrema
         X -> the half-width used to scale the depth.
     grid : (int, int)
         At least (3, 3).
+    quantities : sequence of str
+        Some of :data:`EXTREMUM_QUANTITIES` ("von_mises" and "tresca" need the
+        out-of-plane stresses: :attr:`StressField.sigma_zz`); the others are None in the
+        result.
+
+    Raises
+    ------
+    ContactInputError
+        ``quantities`` empty or naming another quantity.
+    MaterialError
+        "von_mises" or "tresca" for a field without the out-of-plane stresses.
     """
+    names = extremum_quantities(quantities)
     (x0, x1), (y0, y1) = region
     nx, ny = grid
     xs, ys = np.linspace(x0, x1, nx), np.linspace(y0, y1, ny)
     Xg, Yg = np.meshgrid(xs, ys, indexing="ij")
     field = stress(Xg, Yg)
-    names = ("max_shear", "max_tension")
     starts = []                                   # (quantity, X, Y, value)
     for name in names:
         V = getattr(field, name)
@@ -751,7 +878,25 @@ def field_extrema(stress, region, half_width_at, grid=(81, 61)) -> StressExtrema
         depth = abs(float(Y))
         out[name] = Extremum(name, float(val), float(X), float(Y), depth, float(a),
                              depth / float(a))
-    return StressExtrema(out["max_shear"], out["max_tension"], ((x0, x1), (y0, y1)))
+    return StressExtrema(out.get("max_shear"), out.get("max_tension"), ((x0, x1), (y0, y1)),
+                         von_mises=out.get("von_mises"), tresca=out.get("tresca"))
+
+
+def extremum_quantities(quantities) -> tuple:
+    """``quantities`` as a tuple of distinct names from :data:`EXTREMUM_QUANTITIES` (a single
+    name is one quantity), else ContactInputError."""
+    if isinstance(quantities, str):
+        quantities = (quantities,)
+    try:
+        names = tuple(quantities)
+    except TypeError:
+        raise ContactInputError(f"quantities must be a sequence of names from "
+                                f"{EXTREMUM_QUANTITIES}, got {quantities!r}") from None
+    bad = [q for q in names if not isinstance(q, str) or q not in EXTREMUM_QUANTITIES]
+    if bad or not names:
+        raise ContactInputError(f"quantities must be a non-empty sequence of names from "
+                                f"{EXTREMUM_QUANTITIES}, got {quantities!r}")
+    return tuple(dict.fromkeys(names))
 
 
 def _grid_maxima(V, k):
