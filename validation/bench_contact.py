@@ -21,6 +21,11 @@ Targets
 * the stress field under a solved contact (cylinder, c = 0.6, mu = 0.3, n = 64): a 200 x 200
   map in < 50 ms, 1e6 points in < 0.5 s, ``stress_extrema`` in < 20 ms; the baseline is one
   Cauchy transform of the pressure at the same points (the map needs one per decaying root);
+* an anisotropic material (``contact.Anisotropic``, the Stroh formalism) as fast as the
+  orthotropic one it equals: the paper's material as ``Anisotropic.from_orthotropic``, a
+  cylinder (R = 100, P = 0.01, c = 0.6, mu = 0.3) in <= 3 x the ``contact.Orthotropic``
+  solve of the same run (its constants memoised per speed; the first solve on a fresh
+  material, which finds c_L, c_R and the response, is listed as well);
 * a face with kinks as fast as a smooth one (static, frictionless, isotropic E = 1,
   nu = 0.3): a flat punch with rounded corners (breaks at X = +-1, radius 50) pressed wider
   than its flat in <= 10 x the time of the cylinder of the same radius; the gap check's share
@@ -237,6 +242,25 @@ def subsurface_rows(mat, repeat=7):
     return rows
 
 
+def anisotropic_rows(mat, repeat=50):
+    """Rows (case, time [ms], ratio to its baseline, target): a solve on the anisotropic
+    material equal to ``mat`` against the solve on ``mat`` itself."""
+    aniso = contact.Anisotropic.from_orthotropic(mat, C13=4.0, C23=3.0, C33=12.0, C44=6.0,
+                                                 C55=7.0)
+    punch = contact.CylindricalPunch(100.0)
+    kw = dict(load=0.01, speed=0.6, friction=0.3)
+    base = best(lambda: contact.solve(mat, punch, **kw), repeat)
+    t = best(lambda: contact.solve(aniso, punch, **kw), repeat)
+    rows = [("cylinder on the paper's material as contact.Anisotropic, P = 0.01, c = 0.6, "
+             "mu = 0.3", t, f"{t / base:.2f} x the contact.Orthotropic solve",
+             f"<= 3 x {'PASS' if t <= 3.0 * base else 'FAIL'}")]
+    C = aniso.C
+    t = best(lambda: contact.solve(contact.Anisotropic(C), punch, **kw), max(1, repeat // 10))
+    rows.append(("the same on a fresh contact.Anisotropic (c_L, c_R, the response)", t,
+                 f"{t / base:.0f} x the contact.Orthotropic solve", "(information)"))
+    return rows
+
+
 def main():
     OUT.mkdir(parents=True, exist_ok=True)
     mat = contact.zhou2014()
@@ -285,6 +309,11 @@ def main():
               "| case | time [ms] | against a baseline of the same run | target |",
               "|---|---|---|---|"]
     for case, t, ratio, target in subsurface_rows(mat):
+        lines.append(f"| {case} | {t * 1e3:.2f} | {ratio} | {target} |")
+    lines += ["", "## an anisotropic material (contact.Anisotropic)", "",
+              "| case | time [ms] | against a baseline of the same run | target |",
+              "|---|---|---|---|"]
+    for case, t, ratio, target in anisotropic_rows(mat):
         lines.append(f"| {case} | {t * 1e3:.2f} | {ratio} | {target} |")
     lines += ["", "## faces with kinks, and large n", "",
               "| case | time [ms] | against a baseline of the same run | target |",
