@@ -683,9 +683,9 @@ def _closed_form_result(problem, load):
         raise ContactInputError(
             'method="closed_form" holds for a material with the mirror plane X = 0 (M12 = '
             'M21 = M22 = 0, as an orthotropic material aligned with the frame); this '
-            f'material couples p and q at this speed ({couplings}; allowed: within '
-            f'{_ROUNDING:.2g} of N11, resp. of max(abs(N21), abs(N22))): use '
-            'method="numeric"')
+            f'material couples p and q at this speed ({couplings}; allowed: abs(M12) up '
+            f'to {_ROUNDING:.2g} abs(N11), abs(M21) and abs(M22) up to {_ROUNDING:.2g} '
+            f'max(abs(N21), abs(N22)), i.e. rounding): use method="numeric"')
     N = (const.N11, const.N12, const.N21, const.N22, problem.mu_f)
     c = solver(*N, punch.dimension, load)
     kinds = tuple("corner" if x is not None else "free" for x in punch.corners)
