@@ -1,7 +1,7 @@
 """The field under the surface of a moving anisotropic half-space (generalised plane strain).
 
-:func:`stroh_modes` gives, for a material of any symmetry (:class:`contact.anisotropic.
-Anisotropic`), the object that :meth:`contact.ContactResult.stress` and
+:func:`stroh_modes` gives, for a material of any symmetry (:class:`contact.Anisotropic`),
+the object that :meth:`contact.ContactResult.stress` and
 :func:`contact.half_space_stress` need (:class:`contact.MaterialModes`): the complex points
 at which the Cauchy transforms of the surface tractions are wanted and the fixed linear
 combination of them that gives every stress component, in-plane and out-of-plane.
@@ -18,10 +18,10 @@ A Fourier component exp(i k X), k > 0, of the state eta = (u_hat, t_hat / (i k))
 sigma_iY) obeys d eta / dY = i k N eta with the Stroh matrix of the moving half-space N
 (Stroh 1962; Ting 1996, ch. 5 and ch. 12: Q - rho V^2 I in place of Q).  The decaying
 solutions (Y -> -inf) span the invariant subspace of N whose eigenvalues p have Im p < 0
-(Ting 1996, eq. (12.3-5) for the moving case); in the basis whose traction part is the unit
+(Ting 1996, ch. 12, for the moving half-space); in the basis whose traction part is the unit
 matrix it is spanned by the columns of [W; I], W = -(L + i M), with L, M the local and Hilbert
-parts of the surface response (:meth:`Anisotropic.surface_response`, which takes them from
-the matrix sign function), and N restricted to it is the 3x3 matrix
+parts of the surface response (:meth:`contact.Anisotropic.surface_response`, which takes
+them from the matrix sign function), and N restricted to it is the 3x3 matrix
 
     N [W; I] = [W; I] A,    A = N3 W + N1^T     (the lower block row of N [W; I]).
 
@@ -41,7 +41,7 @@ and the matrix function f_m(A) (Higham 2008, ch. 1),
     sigma(X, Y) = Re{ G sum_m f_m(A) e_m },    G = i (A_s W + B_s) = H_s - i L_s,
 
 where L_s = A_s L - B_s and H_s = A_s M are the local and Hilbert parts of the stresses on the
-surface (:class:`SurfaceResponse`: stress_local, stress_hilbert).  On Y = 0 every
+surface (:class:`contact.SurfaceResponse`: stress_local, stress_hilbert).  On Y = 0 every
 f_m(A) = C_{s_m}(X + i0) I = (Hc[s_m] + i s_m) I (Plemelj) and the field returns the surface
 response L_s s + H_s Hc[s]; rows YY, YZ, XY are the tractions -p, -r, -q.  For distinct
 roots f(A) = sum_j f(p_j) P_j (P_j the spectral projectors) is the modal sum of Stroh's
@@ -52,10 +52,11 @@ Repeated and nearly repeated roots
 ----------------------------------
 The modal sum divides by differences of the roots (through the eigenvectors): for an
 isotropic material at rest p = -i is triple and A is not diagonalisable (Ting 1996,
-ch. 5.4: a degenerate material), and near isotropy the eigenvector matrix is nearly singular,
-so the modal sum loses digits as eps / abs(p_i - p_j) (or worse).  Instead f(A) is taken in
+ch. 5: a degenerate material), and near isotropy the eigenvector matrix is nearly singular,
+so the modal sum loses digits as eps / abs(p_i - p_j)^2 (the eigenvectors of a nearly
+defective matrix).  Instead f(A) is taken in
 Newton's form, exact for any 3x3 A with the eigenvalues x_1, x_2, x_3 (Higham 2008,
-Sec. 1.2.2; confluent divided differences where roots repeat):
+ch. 1; confluent divided differences where roots repeat):
 
     f(A) = f[x_1] I + f[x_1, x_2] (A - x_1 I) + f[x_1, x_2, x_3] (A - x_1 I)(A - x_2 I).
 
@@ -73,18 +74,19 @@ and its divided differences at nodes inside the cluster are those of the powers,
 (zeta - m)^j [x_1, ..., x_{k+1}] = h_{j-k}(x_1 - m, ..., x_{k+1} - m) (the complete
 homogeneous symmetric polynomials).  f is analytic in the disc of radius R about m (its
 singularities lie where X + zeta Y meets the real axis), so the aliasing error of the c_j is
-(h / R)^n = 0.1^16 relative; rounding grows as eps (R / h)^k for the k-th difference,
-100 eps for k = 2.  Divided differences across clusters, whose roots are at least
+(h / R)^n = 0.12^16 = 2e-15 relative; rounding grows as eps (R / h)^k for the k-th
+difference, 70 eps for k = 2.  Divided differences across clusters, whose roots are at least
 CLUSTER R apart, are taken from their definition (rounding eps / CLUSTER^2 at worst).  All
 of it is linear in the transforms with fixed weights: each stress is
-Re sum_l K_l C(zeta_l-point), with K fixed by the material and the speed.
+Re sum_l (K_p,l C_p(z_l) + K_q,l C_q(z_l)), z_l = X + zeta_l Y, with K fixed by the material
+and the speed.  A lone root costs one transform, a cluster NODES.
 
 References
 ----------
 Stroh, A. N., "Steady state problems in anisotropic elasticity", J. Math. Phys. 41 (1962)
 77-103.
 Ting, T. C. T., Anisotropic Elasticity: Theory and Applications, Oxford University Press (1996):
-the Stroh formalism (ch. 5), degenerate materials (Sec. 5.4 ff.), steady motion (ch. 12).
+the Stroh formalism and degenerate materials (ch. 5), steady motion (ch. 12).
 Higham, N. J., Functions of Matrices: Theory and Computation, SIAM (2008), ch. 1 (matrix
 functions, the interpolating polynomial and divided differences).
 """

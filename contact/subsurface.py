@@ -4,8 +4,10 @@
 (:class:`contact.Material`): its ``half_space_modes(c)`` (:class:`contact.MaterialModes`)
 says at which complex points the Cauchy transforms of the tractions are needed and how the
 stresses follow from them; :func:`half_space_modes`, :func:`modes_points` and
-:func:`modes_stresses` check what it returns.  :class:`HalfSpaceModes` is the orthotropic
-field, derived below.
+:func:`modes_stresses` (and :func:`modes_out_of_plane`, for modes that give sigma_zz,
+sigma_yz, sigma_xz) check what it returns.  :class:`HalfSpaceModes` is the orthotropic
+field, derived below; :mod:`contact.stroh_modes` is the anisotropic one (generalised plane
+strain, with the out-of-plane stresses and so von Mises and Tresca).
 
 Conventions as for the surface (:mod:`contact.constants`): the half-space is Y < 0 in the
 frame moving with the punch, the tractions on Y = 0 are sigma_YY = -p, sigma_XY = -q, and
@@ -116,6 +118,11 @@ class StressField:
     tresca : ndarray
         (s_1 - s_3) / 2, the largest shear stress over all planes, from the three principal
         stresses; needs the out-of-plane components.
+    principal_3d : (ndarray, ndarray, ndarray)
+        s_1 >= s_2 >= s_3, the principal stresses of the full tensor; needs the
+        out-of-plane components.
+    has_out_of_plane : bool
+        Whether sigma_zz, sigma_yz, sigma_xz are known.
     mean : ndarray
         (sigma_xx + sigma_yy) / 2.
     max_shear : ndarray
@@ -147,6 +154,21 @@ class StressField:
     ('StressField', -1.0)
     >>> round(float(f.sigma_xx) / p0, 9) == round(2.0 - 3.0 / math.sqrt(2.0), 9)
     True
+    >>> f.sigma_zz is None              # the plane model gives no out-of-plane stresses
+    True
+
+    Flamant's line load P = 1 on an isotropic material with its out-of-plane stiffnesses
+    (:class:`contact.Anisotropic`): on the axis at depth 2 the only stresses are
+    sigma_yy = -1/pi and sigma_zz = nu sigma_yy, so von Mises is sqrt(1 - nu + nu^2) / pi
+    and Tresca 1 / (2 pi):
+
+    >>> import numpy as np
+    >>> g = contact.half_space_stress(contact.Anisotropic.isotropic(1.0, 0.25), 0.0, 0.0,
+    ...                               -2.0, lambda z: -1.0 / (np.pi * z))
+    >>> round(float(g.sigma_zz * np.pi), 12), round(float(g.tresca * 2 * np.pi), 12)
+    (-0.25, 1.0)
+    >>> round(float(g.von_mises * np.pi) ** 2, 12)       # 1 - nu + nu^2
+    0.8125
     """
     X: np.ndarray
     Y: np.ndarray
