@@ -312,7 +312,8 @@ def _divided(roots, clusters, functionals, nodes) -> np.ndarray:
         hs = _complete_homogeneous(v, NODES)          # h_n(v), n = 0..NODES-1
         omega = np.exp(-2j * np.pi * np.arange(NODES) / NODES)
         j = np.arange(order, NODES)
-        # c_j weights: (1/n) (h omega^l)^-j;  f[...] = sum_{j >= order} c_j h^(j - order) h_{j-order}(v)
+        # c_j = (1/n) sum_l f(zeta_l) (h omega^l)^-j and
+        # f[x_1..x_{order+1}] = sum_{j >= order} c_j h^(j - order) h_{j - order}(v)
         powers = omega[None, :] ** j[:, None]                      # (j, l)
         w[l0:l0 + NODES] = (hs[j - order] @ powers) / (NODES * h ** order)
         return w
