@@ -119,6 +119,7 @@ import numpy as np
 from .constants import SurfaceConstants
 from .errors import FrictionError, MaterialError, SpeedError, check_finite, real_array
 from .material import Orthotropic
+from .stroh_modes import stroh_modes
 
 __all__ = ["Anisotropic", "SurfaceResponse", "PressureCoefficients", "VOIGT",
            "voigt_to_tensor", "tensor_to_voigt"]
@@ -823,7 +824,6 @@ class Anisotropic:
         ----------
         Stroh, J. Math. Phys. 41 (1962) 77-103; Ting (1996), ch. 5 and 12.
         """
-        from .stroh_modes import stroh_modes      # the other helper writes this module
         return stroh_modes(self, c)
 
 

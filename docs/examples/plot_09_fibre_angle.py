@@ -84,3 +84,30 @@ for ax, ylabel in zip(ax2, ("half-width a [mm]", "centre of the contact [mm]",
     ax.set_ylabel(ylabel)
 ax2[0].legend(fontsize=8)
 plt.show()
+
+# %%
+# Under the surface: the largest von Mises stress (from the full 3D stress, sigma_ZZ and the
+# out-of-plane shears that generalised plane strain brings included) against the fibre
+# angle, over and below the contact.  For the isotropic Hertz contact it is 0.56 p0 at
+# depth 0.70 a (Johnson 1985, sec. 4.2, nu = 0.3).  The ply at 0 degrees, stiff along X,
+# has sigma_XX = N21 p = -sqrt(C11 / C22) p = -3.3 p on the surface under the pressure
+# alone, and its maximum lies there.
+fig3, ax3 = plt.subplots(1, 2, figsize=(10, 3.2), layout="constrained")
+for axis, style in zip("yz", ("o-", "s--")):
+    label = "about Y (surface plane)" if axis == "y" else "about Z (into the depth)"
+    value, depth = [], []
+    for theta in angles[::2]:
+        r = contact.solve(turned(axis, theta), punch, load=P, speed=0.0, friction=mu)
+        p_max = np.max(r.pressure(np.linspace(*r.ends, 401)[1:-1]))
+        e = r.stress_extrema(quantities=("von_mises",)).von_mises
+        value.append(e.value / p_max)
+        depth.append(e.depth_over_a)
+    ax3[0].plot(angles[::2], value, style, ms=3, label=label)
+    ax3[1].plot(angles[::2], depth, style, ms=3, label=label)
+    print(f"about {axis.upper()}: max von Mises {min(value):.3f} .. {max(value):.3f} p_max")
+ax3[0].set_ylabel("max von Mises / p_max")
+ax3[1].set_ylabel("its depth / a")
+for ax in ax3:
+    ax.set_xlabel("fibre angle [deg]")
+ax3[0].legend(fontsize=8)
+plt.show()
