@@ -173,3 +173,23 @@ def test_the_roots_field_needs_characteristic_roots():
     with pytest.raises(SceneError, match=r"outputs.fields\[0\].*characteristic_roots"):
         parse_scene_text(_scene('kind = "anisotropic"\n' + _C_rows(_aligned_paper()),
                                 fields='["roots"]'))
+
+
+def test_a_case_travels_to_a_worker_as_plain_data():
+    """A process pool rebuilds the turned ply from the case's plain data (picklable: a
+    spawned or remote worker gets the same) and gives the serial run's numbers, the
+    subsurface extrema included."""
+    import pickle
+    from concurrent.futures import ProcessPoolExecutor
+    s = parse_scene_text(_scene('kind = "anisotropic"\nrotation = { axis = "z", degrees = 30 }'
+                                + _engineering_table(),
+                                motion="load = 0.01\nspeed = [0.0, 0.2]\nfriction = 0.3",
+                                fields='["ends", "constants", "subsurface"]'))
+    assert pickle.loads(pickle.dumps(s.material)) == s.material
+    with ProcessPoolExecutor(2) as ex:
+        pooled = run_scene(s, executor=ex)
+    serial = run_scene(s)
+    for a, b in zip(pooled.cases, serial.cases, strict=True):
+        assert a.entry["ends"] == b.entry["ends"]
+        assert a.entry["constants"] == b.entry["constants"]
+        assert a.entry["subsurface"] == b.entry["subsurface"]
