@@ -133,21 +133,31 @@ def _panels(q, breaks, pts, q_small=_Q_SMALL, shift=0):
     its full count.  Toward an end the weight (1 -+ x)^e may be singular (e < 0): a piece's share then falls
     only like its length^(1 + e), and the counts stay.  Checked against a rule with twice the nodes on every piece
     (tests/sie/test_remainder_rules.py): delta_phi and the log potential of w delta_phi
-    agree to rounding with and without the hp counts."""
+    agree to rounding with and without the hp counts.
+
+    Whatever the depth, a piece also gets k + min(q_small, k) nodes (up to q), k = q dtheta / 2,
+    dtheta the angle it spans in x = cos(theta): the integrands carry the projection's
+    polynomial part, of degree ~q, which oscillates like cos(q theta) and needs about that
+    many whatever the pole does.  Away from the ends this is below the counts above
+    (dtheta ~ length); next to an end the angle falls only like the square root of the
+    length, and without it a break 1e-2 to 1e-6 from an end left phi off by 1e-10 to 2e-8
+    at n = 768 to 3072
+    (tests/sie/test_breaks_near_ends.py)."""
     return _graded_rule(q, 0.0, 0.0, breaks, pts, q_small, shift, details=True)[5:]
 
 
 @functools.lru_cache(maxsize=64)
-def _rule_table(q, q_small, shift, alpha, beta):
+def _rule_table(q, q_small, shift, alpha, beta, extra=()):
     """The Gauss rules that the pieces of :func:`_panels` may ask for, concatenated (nodes,
-    weights): Gauss-Legendre with every count a graded piece may have (_HP_MIN + shift up
-    to one more than q_small + shift + 0.2 q) and with q + shift nodes, and Gauss-Jacobi
-    with q + shift nodes for an end piece (at -1, at +1, and one piece spanning both).
-    Returns (u, w, offset of the Legendre rule of each count (-1: none), offsets of the
-    end rules at -1, at +1 and of both)."""
+    weights): Gauss-Legendre with every count a graded piece of a mesh away from the ends
+    may have (_HP_MIN + shift up to one more than q_small + shift + 0.2 q), with the counts
+    ``extra`` (those of pieces near an end, :func:`_piece_counts`) and with q + shift
+    nodes, and Gauss-Jacobi with q + shift nodes for an end piece (at -1, at +1, and one
+    piece spanning both).  Returns (u, w, offset of the Legendre rule of each count (-1:
+    none), offsets of the end rules at -1, at +1 and of both)."""
     qq = q + shift
-    top = q_small + shift + math.ceil(0.2 * q) + 2
-    counts = sorted(set(range(min(_HP_MIN, q_small + 1) + shift, top)) | {qq})
+    top = _table_top(q, q_small, shift)
+    counts = sorted(set(range(min(_HP_MIN, q_small + 1) + shift, top)) | {qq} | set(extra))
     rules = [gauss_jacobi_cached(c, 0.0, 0.0) for c in counts]
     rules += [gauss_jacobi_cached(qq, 0.0, beta), gauss_jacobi_cached(qq, alpha, 0.0),
               gauss_jacobi_cached(qq, alpha, beta)]
@@ -157,6 +167,11 @@ def _rule_table(q, q_small, shift, alpha, beta):
     legendre[counts] = starts[:len(counts)]
     return (np.concatenate([r[0] for r in rules]), np.concatenate([r[1] for r in rules]),
             legendre, starts[len(counts):].copy())
+
+
+def _table_top(q, q_small, shift):
+    """One more than the largest count of :func:`_rule_table`'s range of Legendre rules."""
+    return q_small + shift + math.ceil(0.2 * q) + 2
 
 
 def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details=False):
@@ -169,26 +184,29 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details
     1e-12 wide at an end can round onto the end itself), and per piece its ends and node
     count."""
     q, q_small, shift, alpha, beta = int(q), int(q_small), int(shift), float(alpha), float(beta)
-    u, wu, legendre, ends = _rule_table(q, q_small, shift, alpha, beta)
+    pts = np.ascontiguousarray(pts, dtype=float)
     gaps = np.concatenate([[-1.0], np.asarray(breaks, dtype=float), [1.0]])
-    out = _graded_nodes(np.ascontiguousarray(pts, dtype=float), gaps, q, q_small, shift,
-                        alpha, beta, u, wu, legendre, ends, _HP_SLOPE, _HP_MIN,
-                        math.log(1.0 / _GRADING))
+    los, his, counts = _piece_counts(pts, gaps, q, q_small, shift, _HP_SLOPE, _HP_MIN,
+                                     math.log(1.0 / _GRADING))
+    top = _table_top(q, q_small, shift)
+    extra = tuple(sorted({int(c) for c in counts if c >= top and c != q + shift}))
+    u, wu, legendre, ends = _rule_table(q, q_small, shift, alpha, beta, extra)
+    out = _graded_nodes(los, his, counts, alpha, beta, u, wu, legendre, ends)
     return out if details else out[:2]
 
 
+_LADDER = 8           # counts set by a piece's angle rise in steps of 1/8 of their size
+
+
 @jit()
-def _graded_nodes(pts, gaps, q, q_small, shift, alpha, beta, tab_u, tab_w, legendre, ends,
-                  hp_slope, hp_min, log_ratio):
-    """:func:`_graded_rule` with its details: (x, w, piece, 1 - x, 1 + x, lo, hi, counts).
-    ``gaps``: -1, the breaks, +1; ``tab_u``, ``tab_w``, ``legendre``, ``ends``: the rules of
-    :func:`_rule_table`; ``hp_slope``, ``hp_min``: the counts' fall with depth
-    (:func:`_panels`); ``log_ratio``: log(1 / _GRADING)."""
+def _piece_counts(pts, gaps, q, q_small, shift, hp_slope, hp_min, log_ratio):
+    """The pieces of the mesh ``pts`` (lo, hi) and their node counts (:func:`_panels`).
+    ``gaps``: -1, the breaks, +1; ``hp_slope``, ``hp_min``: the counts' fall with depth;
+    ``log_ratio``: log(1 / _GRADING)."""
     npc = pts.shape[0] + 1
     los = np.empty(npc)
     his = np.empty(npc)
     counts = np.empty(npc, dtype=np.int64)
-    total = 0
     for i in range(npc):
         lo = -1.0 if i == 0 else pts[i - 1]
         hi = 1.0 if i == npc - 1 else pts[i]
@@ -210,10 +228,31 @@ def _graded_nodes(pts, gaps, q, q_small, shift, alpha, beta, tab_u, tab_w, legen
             if not (toward_end or innermost):
                 level = math.floor(math.log(0.2 * gap / (hi - lo)) / log_ratio)
                 cnt = max(hp_min, cnt - int(math.floor(hp_slope * level)))
+            # the projection's polynomial part, cos(q theta)-like: k = q dtheta / 2 nodes
+            # and min(q_small, k) more at any depth (:func:`_panels`), rounded up to a
+            # ladder of _LADDER steps per doubling (fewer distinct rules), at most q (which
+            # integrates it exactly)
+            dtheta = math.acos(max(lo, -1.0)) - math.acos(min(hi, 1.0))
+            kappa = int(math.ceil(0.5 * q * dtheta))
+            poly = kappa + min(q_small, kappa)
+            if poly > cnt:
+                step = max(1, poly // _LADDER)
+                cnt = min(q, step * ((poly + step - 1) // step))
         los[i] = lo
         his[i] = hi
         counts[i] = cnt + shift
-        total += cnt + shift
+    return los, his, counts
+
+
+@jit()
+def _graded_nodes(los, his, counts, alpha, beta, tab_u, tab_w, legendre, ends):
+    """:func:`_graded_rule` with its details: (x, w, piece, 1 - x, 1 + x, lo, hi, counts),
+    on the pieces ``los``, ``his`` with ``counts`` (:func:`_piece_counts`); ``tab_u``,
+    ``tab_w``, ``legendre``, ``ends``: the rules of :func:`_rule_table`."""
+    npc = los.shape[0]
+    total = 0
+    for i in range(npc):
+        total += counts[i]
     x = np.empty(total)
     w = np.empty(total)
     piece = np.empty(total, dtype=np.int64)
