@@ -6,8 +6,10 @@
 Public API: the equation object :class:`Equation` (validated once; its blocks are
 (unknown, interval) pairs; a leading case axis solves many one-interval equations at once),
 :func:`solve` (the one-call form), :class:`Solution` / :class:`SolutionBatch`,
-:func:`gauss_jacobi`, the exponent rule :func:`sie_exponents`, Jacobi helpers, and the
-exceptions (all ``ValueError`` subclasses).  This package knows no mechanics.
+:func:`gauss_jacobi`, the exponent rule :func:`sie_exponents`, Jacobi helpers, systems with
+constant matrix coefficients on one interval (:func:`solve_system`, :mod:`sie.systems`: modes
+with real or complex exponents), and the exceptions (all ``ValueError`` subclasses).  This
+package knows no mechanics.
 
 ``N_MAX`` (defined in :mod:`sie.solver`) is the largest number of Jacobi coefficients per
 interval that :func:`solve` accepts: the projection is dense, O(n^2) work and memory per
@@ -37,6 +39,8 @@ from .solver import Functionals
 from .block import Block
 from .equation import Equation, solve
 from .special import jacobi_moment
+from .systems import (ModeExponents, SystemModes, SystemSolution, mode_exponents,
+                      solve_system, system_modes)
 
 #: Largest number of Jacobi coefficients per interval that :meth:`Equation.solve`,
 #: :meth:`Equation.functionals` and :func:`solve` accept (``sie.solver.N_MAX``;
@@ -51,6 +55,8 @@ __all__ = [
     "Functionals", "FunctionalsBatch",
     "gauss_jacobi", "sie_exponents", "Exponents", "jacobi_cauchy", "N_MAX",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
+    "solve_system", "system_modes", "mode_exponents", "SystemSolution", "SystemModes",
+    "ModeExponents",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",
     "InvalidBreakpointError", "EvaluationPointError", "InvalidIntervalError",

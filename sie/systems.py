@@ -1,0 +1,880 @@
+r"""Systems of Cauchy singular integral equations with constant matrix coefficients on one
+interval, by decoupling into modes with real or complex end exponents.
+
+    A psi(s) + (B/pi) PV int_c^d psi(t)/(t - s) dt = f(s),   c < s < d,
+    psi = (psi_1, ..., psi_m),  A, B real m x m constant, B invertible.        (1)
+
+The interval is mapped onto [-1, 1] (the Cauchy integral is invariant under s = m + h u), so
+everything below is on [-1, 1]; H[phi](s) = (1/pi) PV int phi(t)/(t - s) dt.
+
+**Decoupling** (Muskhelishvili 1953, ch. 18 for systems; Erdogan, Gupta & Cook 1973).
+Multiply (1) by B^{-1} and diagonalise B^{-1} A = V diag(lambda) V^{-1}.  With phi = V^{-1} psi
+and g = V^{-1} B^{-1} f the system falls apart into m scalar equations
+
+    lambda_k phi_k + H[phi_k] = g_k,   k = 1..m,                               (2)
+
+each the scalar equation of :mod:`sie` with a = lambda_k, b = 1.  For real A, B the
+eigenvalues are real or come in conjugate pairs, with conjugate eigenvectors (enforced exactly
+here), so that conjugate modes have conjugate data g and psi = V phi is real.  A matrix B^{-1} A
+that is not diagonalisable (a Jordan block, or cond(V) > 1e8) is refused.
+
+**Exponents.**  phi_k = w_k Phi_k with w = (1-s)^alpha (1+s)^beta and Phi_k smooth; alpha0
+solves cot(pi alpha0) = -lambda.  The branch is
+
+    alpha0 = 1/2 + arctan(lambda)/pi     (principal arctan),                   (3)
+
+which for real lambda is the principal arccot in (0, 1) that :func:`sie.sie_exponents` uses
+(arccot(-lambda) = pi/2 + arctan(lambda)), and which is analytic in lambda off the cuts of
+arctan, the imaginary half-lines Im lambda >= 1 and <= -1 (with Re lambda = 0).  It is
+continuous across the real axis, so the limit Im lambda -> 0 of a complex mode is the real
+mode (no jump between the branches), and 0 < Re alpha0 < 1 everywhere off the cuts, so that
+"bounded" (alpha = alpha0, beta = 1 - alpha0) and "singular" (alpha = alpha0 - 1,
+beta = -alpha0) keep their meaning through the real parts; kappa = -(alpha + beta) as for a
+scalar equation.  Conjugate eigenvalues give conjugate exponents (arctan(conj z) =
+conj arctan(z)).  On the cuts (lambda = i t, abs(t) >= 1) Re alpha0 is 0 or 1: an exponent
+would lie on the border of integrability, and such systems are refused (lambda = +-i, where
+A -+ i B is singular, is the equation that is not of normal type).  The interface crack has
+lambda = +-i beta_D with abs(beta_D) < 1/2 (Dundurs): alpha0 = 1/2 +- i eps,
+eps = artanh(beta_D)/pi, the oscillatory exponent -1/2 +- i eps of Rice & Sih (1965).
+
+**The dominant identity for complex exponents.**  For real (alpha, beta) with alpha + beta =
+-kappa an integer and lambda = -cot(pi alpha) (sie-math item 1; Erdogan, Gupta & Cook 1973),
+
+    lambda w P_n^{(alpha,beta)} + H[w P_n^{(alpha,beta)}]
+        = -2^{-kappa} / sin(pi alpha) P_{n-kappa}^{(-alpha,-beta)},  P_{-1} = 0.  (4)
+
+Fix kappa, n and s in (-1, 1) and let alpha be complex with -1 < Re alpha < 1 - kappa (both
+weights integrable), beta = -kappa - alpha.  P_n^{(alpha,beta)}(s) is a polynomial in alpha
+(DLMF 18.5.7: its coefficients are polynomials in the parameters; Szegő 1975, sec. 4.21, for
+complex parameters), w(t) = exp(alpha log(1-t) + beta log(1+t)) is entire in alpha, and
+H[w P_n](s) = (1/pi)[int (F(t) - F(s))/(t - s) dt + F(s) log((1-s)/(1+s))], F = w P_n, is an
+integral of functions analytic in alpha and dominated, locally uniformly in alpha, by an
+integrable function (the difference quotient of a function C^1 near s, the weight
+(1-t)^{Re alpha}(1+t)^{Re beta} at the ends): so both sides of (4) are analytic in alpha on
+the connected strip minus the integers (where 1/sin(pi alpha) has poles).  They agree on its
+real segment, hence on all of it (identity theorem).  The same argument carries the
+bilinear orthogonality int W P_j P_k = h_k delta_jk of P^{(-alpha,-beta)} with the complex
+weight W = (1-s)^{-alpha}(1+s)^{-beta} and the closed forms of h_k and of
+mu_0 = int w over to complex parameters.  Tests: the manufactured solutions of
+tests/sie/test_systems.py, whose f is computed from psi by mpmath quadrature of the
+principal value, not from (4).
+
+**The solution.**  With phi_k = w_k sum_{j<n} c_kj P_j^{(alpha_k,beta_k)} and g_k =
+sum_j d_kj P_j^{(-alpha_k,-beta_k)}, (4) gives c_kj = -2^{kappa} sin(pi alpha_k) d_{k,j-kappa}:
+kappa = 1 leaves c_k0 free (fixed by a side condition below), kappa = -1 needs d_k0 = 0 (the
+solvability condition of the mode, reported as its consistency; the returned phi solves the
+equation without that part).
+
+**The projection with a complex weight.**  d_kj is the projection of g_k on
+P_j^{(-alpha,-beta)} with respect to W = (1-s)^{-Re alpha}(1+s)^{-Re beta}
+exp(-i Im alpha log(1-s) - i Im beta log(1+s)), which oscillates without bound at the ends: a
+Gauss rule of its real part integrates the oscillating factor only approximately.  Instead,
+the projection of the interpolant: with the N = n - kappa roots x_i of
+P_N^{(-Re alpha, -Re beta)} (the Gauss-Jacobi nodes of the real part), the polynomial p of
+degree < N through g(x_i) is expanded in P_j^{(-alpha,-beta)}, j < N, by a solve with the
+matrix P_j^{(-alpha,-beta)}(x_i) (complex three-term recurrence, DLMF 18.9.1-2).  By the
+bilinear orthogonality its coefficients are exactly the W-projections of p, so the rule is
+exact for every g that is a polynomial of degree < N, and otherwise is as accurate as the
+interpolant (the collocation of the scalar solver).  With the rows scaled by the square roots
+of the real Gauss weights and the columns to unit norm, the matrix is close to unitary
+(it is unitary for real exponents): its condition number is 1.2 at lambda = 0.3 + 0.2i, 1.7 at
+0.5i, 4.6 at 0.9i, 1.7 at 0.3 + 2i, the same for N = 20, 100 and 400.  For a real mode the
+rule is the Gauss-Jacobi projection itself, the scalar solver's collocation.  The solve costs
+O(N^3) per complex mode (hence :data:`N_MAX_SYSTEM`).
+
+**Side conditions.**  int phi_k = mu0_k c_k0 (the basis is orthogonal to P_0 = 1 with the
+weight w), mu0 = 2^{1-kappa}/Gamma(2-kappa) Gamma(1+alpha) Gamma(1+beta) =
+2^{1-kappa}/Gamma(2-kappa) (-pi/sin(pi alpha)) prod_{j=0}^{-kappa} (j - alpha) (reflection
+formula).  Each mode of index 1 adds one unknown c_k0; as many totals int psi_i = T_i as there
+are such modes, for components i the user chooses, fix them through
+int psi = V (mu0 c_0): a square linear system, refused when singular.
+
+**Evaluation.**  psi = Re(V phi) (the imaginary part is rounding for real data; its relative
+size at seven check points is :attr:`SystemSolution.imaginary`, warned above 1e-8), and
+inside the interval H[psi] = V H[phi] with H[phi_k] = -lambda_k phi_k +
+sum_j c_kj (-2^{-kappa}/sin(pi alpha_k)) P_{j-kappa}^{(-alpha_k,-beta_k)} from (4).
+
+References
+----------
+N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953), ch. 10 and 18.
+F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral equations",
+in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.), Noordhoff (1973),
+ch. 7.  G. Szegő, Orthogonal Polynomials, 4th ed., AMS (1975), ch. 4.  NIST DLMF, ch. 18.
+J. R. Rice and G. C. Sih, "Plane problems of cracks in dissimilar media", J. Appl. Mech. 32
+(1965) 418-423; J. R. Rice, "Elastic fracture mechanics concepts for interfacial cracks",
+J. Appl. Mech. 55 (1988) 98-103.
+"""
+from __future__ import annotations
+
+import functools
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+
+from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
+                     InvalidCoefficientError, InvalidEndConditionError, InvalidIntervalError,
+                     InvalidOrderError, SideConditionError, SIEWarning, UnsupportedEquationError,
+                     check_finite_real, check_order, is_number)
+from .exponents import check_coefficients, check_end, exponents_of
+from .gaussjacobi import gauss_jacobi_cached
+from .jacobi import jacobi_norms_cached, jacobi_vandermonde
+
+__all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
+           "SystemSolution", "N_MAX_SYSTEM"]
+
+#: Largest n :func:`solve_system` accepts: a complex mode's projection is a dense solve,
+#: O(n^3) (about 1 s at n = 2000 on two cores).
+N_MAX_SYSTEM = 2000
+#: cond(V) above this: B^{-1} A is treated as not diagonalisable.
+_COND_V_MAX = 1e8
+#: cond(B) above this: B is treated as singular.
+_COND_B_MAX = 1e13
+_IMAG_WARN = 1e-8             # relative imaginary part of psi that warns
+_CONSISTENCY_TOL = 1e-8       # as sie.solver.CONSISTENCY_TOL
+_CHECK_POINTS = np.cos(np.pi * (np.arange(7) + 0.5) / 7) * 0.999
+
+
+# --------------------------------------------------------------------------
+# modes
+# --------------------------------------------------------------------------
+def _real_matrix(name, M):
+    try:
+        arr = np.asarray(M)
+    except (TypeError, ValueError) as exc:
+        raise InvalidCoefficientError(f"{name} must be a real square matrix, got {M!r}: {exc}") \
+            from None
+    if arr.dtype.kind not in "iuf" and not (arr.dtype == object and all(
+            is_number(v) for v in arr.flat)):
+        raise InvalidCoefficientError(
+            f"{name} must be a real square matrix (real numbers), got dtype {arr.dtype}")
+    arr = arr.astype(float)
+    if arr.ndim != 2 or arr.shape[0] != arr.shape[1] or arr.shape[0] == 0:
+        raise InvalidCoefficientError(
+            f"{name} must be a square m x m matrix with m >= 1, got shape {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise InvalidCoefficientError(f"{name} must have finite entries, got {arr.tolist()}")
+    return arr
+
+
+@dataclass(frozen=True, eq=False)
+class SystemModes:
+    """The modes of A psi + B H[psi]: B^{-1} A = V diag(lambdas) V^{-1}.
+
+    Returned by :func:`system_modes`.  The modes are ordered by (Re lambda, Im lambda); that
+    is the order of per-mode arguments (``left``, ``right``) and results.
+
+    Attributes
+    ----------
+    lambdas : ndarray of complex, shape (m,)
+        The eigenvalues of B^{-1} A (conjugate pairs exactly conjugate; real ones with
+        imaginary part 0).
+    vectors : ndarray of complex, shape (m, m)
+        V, unit columns (real for real eigenvalues, conjugate for conjugate pairs).
+    project : ndarray of complex, shape (m, m)
+        (B V)^{-1} = V^{-1} B^{-1}: g = project @ f.
+    partner : tuple of int
+        For each mode the index of its conjugate mode (itself for a real mode).
+    alpha0 : ndarray of complex
+        The root of cot(pi alpha0) = -lambda on the branch (3) of the module docstring.
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 18.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> md = sie.system_modes([[0.0, -0.2], [0.2, 0.0]], np.eye(2))
+    >>> np.round(md.lambdas, 12).tolist(), md.partner
+    ([-0.2j, 0.2j], (1, 0))
+    """
+    lambdas: np.ndarray
+    vectors: np.ndarray
+    project: np.ndarray
+    partner: tuple
+    alpha0: np.ndarray
+
+    @property
+    def m(self) -> int:
+        return self.lambdas.size
+
+    def is_real(self, k) -> bool:
+        return self.partner[k] == k
+
+
+def system_modes(A, B) -> SystemModes:
+    """The modes of the dominant operator A psi + (B/pi) PV int psi/(t - s) dt.
+
+    Parameters
+    ----------
+    A, B : array_like, shape (m, m)
+        Real, finite; B invertible.
+
+    Returns
+    -------
+    SystemModes
+
+    Raises
+    ------
+    InvalidCoefficientError
+        A or B not real, not square, not of one size, not finite; B singular (cond(B) above
+        1e13); an eigenvalue of B^{-1} A on the cuts lambda = i t, abs(t) >= 1, where an
+        exponent has real part 0 or 1 (see the module docstring); a real eigenvalue whose
+        exponents double precision does not resolve (as :func:`sie.sie_exponents`).
+    UnsupportedEquationError
+        B^{-1} A not diagonalisable to working accuracy (cond(V) above 1e8).
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 18.
+
+    Examples
+    --------
+    A real pair and a conjugate pair; the modes ordered by (Re lambda, Im lambda):
+
+    >>> import numpy as np, sie
+    >>> A = np.array([[1.0, 0.0, 0.0], [0.0, 0.2, -0.5], [0.0, 0.5, 0.2]])
+    >>> md = sie.system_modes(A, np.eye(3))
+    >>> np.round(md.lambdas, 12).tolist(), md.partner
+    ([(0.2-0.5j), (0.2+0.5j), (1+0j)], (1, 0, 2))
+    """
+    A = _real_matrix("A", A)
+    B = _real_matrix("B", B)
+    if A.shape != B.shape:
+        raise InvalidCoefficientError(f"A and B must have the same shape, got {A.shape} and "
+                                      f"{B.shape}")
+    cb = np.linalg.cond(B)
+    if not cb < _COND_B_MAX:
+        raise InvalidCoefficientError(
+            f"B must be invertible: cond(B) = {cb:.3g} (above {_COND_B_MAX:.0e}); a singular "
+            "B leaves a combination of the unknowns without a Cauchy integral")
+    M = np.linalg.solve(B, A)
+    lam, V = np.linalg.eig(M)
+    lam = lam.astype(complex)
+    V = V.astype(complex)
+    order = np.lexsort((lam.imag, lam.real))
+    lam, V = lam[order], V[:, order]
+    m = lam.size
+    partner = list(range(m))
+    done = np.zeros(m, bool)
+    for k in range(m):
+        if done[k]:
+            continue
+        done[k] = True
+        if lam[k].imag == 0.0:
+            v = V[:, k].real
+            V[:, k] = v * (np.sign(v[np.argmax(np.abs(v))]) / np.linalg.norm(v))
+            continue
+        # its conjugate (LAPACK returns it exactly; the nearest one otherwise)
+        cand = [j for j in range(m) if not done[j]]
+        j = min(cand, key=lambda i: abs(lam[i] - np.conj(lam[k])))
+        done[j] = True
+        v = V[:, k]
+        v = v * (np.conj(v[np.argmax(np.abs(v))]) / np.abs(v[np.argmax(np.abs(v))]))
+        V[:, k] = v / np.linalg.norm(v)
+        lam[j] = np.conj(lam[k])
+        V[:, j] = np.conj(V[:, k])
+        partner[k], partner[j] = j, k
+    cv = np.linalg.cond(V)
+    if not cv < _COND_V_MAX:
+        raise UnsupportedEquationError(
+            f"B^-1 A is not diagonalisable to working accuracy (cond of its eigenvectors "
+            f"{cv:.3g}, above {_COND_V_MAX:.0e}): a Jordan block couples the modes, which "
+            "solve_system does not decouple")
+    alpha0 = np.array([_alpha0(l) for l in lam])
+    for v in (lam, V, alpha0):
+        v.flags.writeable = False
+    P = np.linalg.inv(B @ V)
+    P.flags.writeable = False
+    return SystemModes(lam, V, P, tuple(partner), alpha0)
+
+
+def _alpha0(lam: complex):
+    """(alpha0, 1 - alpha0) of the branch (3), each without cancellation."""
+    if lam.imag == 0.0:
+        a, _ = check_coefficients(lam.real, 1.0)
+        y = -a
+        return complex(math.atan2(1.0, y) / math.pi)
+    if lam.real == 0.0 and abs(lam.imag) >= 1.0:
+        raise InvalidCoefficientError(
+            f"an eigenvalue of B^-1 A is lambda = {lam:.6g}, on the cut lambda = i t, "
+            "|t| >= 1, of the exponent's branch: the end exponents (cot(pi alpha0) = "
+            "-lambda) have real part 0 or 1, on the border of integrability (at |t| = 1 the "
+            "system is not of normal type: A -+ i B is singular)")
+    return _alpha0_pair(lam)[0]
+
+
+def _alpha0_pair(lam: complex):
+    if abs(lam) <= 1.0:
+        t = complex(np.arctan(lam)) / math.pi
+        return 0.5 + t, 0.5 - t
+    u = complex(np.arctan(1.0 / lam)) / math.pi    # arctan(l) = +-pi/2 - arctan(1/l)
+    if lam.real < 0.0:
+        return -u, 1.0 + u
+    return 1.0 - u, u
+
+
+@dataclass(frozen=True)
+class ModeExponents:
+    """End exponents of one mode: phi = (1-s)^alpha (1+s)^beta Phi.
+
+    Returned by :func:`mode_exponents`.  Complex where lambda is complex; for a real lambda
+    the values of :func:`sie.sie_exponents` (a = lambda, b = 1) with zero imaginary parts.
+
+    Attributes
+    ----------
+    lam : complex
+        The eigenvalue (cot(pi alpha) = -lambda).
+    alpha0 : complex
+        The root of cot(pi alpha0) = -lambda on the branch (3) of the module docstring.
+    alpha, beta : complex
+        The exponents at s = 1 and s = -1.
+    kappa : int
+        -(alpha + beta).
+    sin : complex
+        sin(pi alpha).
+    left, right : str
+        The end choices.
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10; J. R. Rice and
+    G. C. Sih, J. Appl. Mech. 32 (1965) 418 (the exponents -1/2 +- i eps).
+
+    Examples
+    --------
+    >>> import sie
+    >>> e = sie.mode_exponents(0.0, "bounded", "singular")      # a = 0: +-1/2
+    >>> type(e).__name__, e.alpha, e.beta, e.kappa
+    ('ModeExponents', (-0.5+0j), (0.5+0j), 0)
+    """
+    lam: complex
+    alpha0: complex
+    alpha: complex
+    beta: complex
+    kappa: int
+    sin: complex
+    left: str
+    right: str
+
+    @property
+    def is_real(self) -> bool:
+        return self.lam.imag == 0.0
+
+
+def mode_exponents(lam, left: str, right: str) -> ModeExponents:
+    """End exponents of lambda phi + H[phi] = g for real or complex lambda.
+
+    Right end: alpha = alpha0 ("bounded") or alpha0 - 1 ("singular"); left end:
+    beta = 1 - alpha0 ("bounded") or -alpha0 ("singular"); alpha0 = 1/2 + arctan(lambda)/pi
+    (eq. (3) of the module docstring: 0 < Re alpha0 < 1, continuous as Im lambda -> 0).
+
+    Parameters
+    ----------
+    lam : complex
+        Not on the cuts lambda = i t, abs(t) >= 1.
+    left, right : {"bounded", "singular"}
+
+    Returns
+    -------
+    ModeExponents
+
+    Raises
+    ------
+    InvalidCoefficientError
+        lam not finite, or on the cuts.
+    InvalidEndConditionError
+        left or right not "bounded" or "singular".
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 10 (the exponents of a
+    scalar equation); J. R. Rice and G. C. Sih, J. Appl. Mech. 32 (1965) 418 (the
+    interface crack's -1/2 +- i eps).
+
+    Examples
+    --------
+    The interface crack's mode (lambda = i beta_D): alpha = -1/2 + i eps at a singular end,
+    eps = artanh(beta_D)/pi.
+
+    >>> import numpy as np, sie
+    >>> e = sie.mode_exponents(0.3j, "singular", "singular")
+    >>> round(e.alpha.real, 12), bool(abs(e.alpha.imag - np.arctanh(0.3) / np.pi) < 1e-15), e.kappa
+    (-0.5, True, 1)
+    """
+    left, right = check_end("left", left), check_end("right", right)
+    try:
+        lam = complex(lam)
+    except (TypeError, ValueError):
+        raise InvalidCoefficientError(f"lambda must be a number, got {lam!r}") from None
+    if not (math.isfinite(lam.real) and math.isfinite(lam.imag)):
+        raise InvalidCoefficientError(f"lambda must be finite, got {lam!r}")
+    if lam.imag == 0.0:
+        a, b = check_coefficients(lam.real, 1.0)
+        e = exponents_of(a, b, left, right)
+        return ModeExponents(complex(lam.real), complex(e.alpha0), complex(e.alpha),
+                             complex(e.beta), e.kappa, complex(e.sin), left, right)
+    _alpha0(lam)                                 # refuses the cuts
+    a0, a0c = _alpha0_pair(lam)
+    s0 = complex(np.sin(np.pi * a0))
+    alpha, sin = (a0, s0) if right == "bounded" else (-a0c, -s0)
+    beta = a0c if left == "bounded" else -a0
+    kappa = {("singular", "singular"): 1, ("bounded", "bounded"): -1}.get((left, right), 0)
+    return ModeExponents(lam, a0, alpha, beta, kappa, sin, left, right)
+
+
+# --------------------------------------------------------------------------
+# Jacobi polynomials with complex parameters
+# --------------------------------------------------------------------------
+def _jacobi_columns(N, a, b, x):
+    """V[i, k] = P_k^{(a,b)}(x_i), k < N, complex a, b (DLMF 18.9.1-2, as
+    :func:`sie.jacobi.jacobi_vandermonde`)."""
+    x = np.asarray(x, dtype=float)
+    V = np.empty((x.size, N), dtype=complex)
+    if N == 0:
+        return V
+    V[:, 0] = 1.0
+    if N > 1:
+        ap1 = a + 1.0
+        abp2 = ap1 + (b + 1.0)
+        V[:, 1] = ap1 + 0.5 * abp2 * (x - 1.0)
+        for k in range(1, N - 1):
+            s = 2.0 * (k - 1) + abp2
+            d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+            A = (s + 1.0) * (s + 2.0) * s / d
+            Bk = (s + 1.0) * (a * a - b * b) / d
+            C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
+            V[:, k + 1] = (A * x + Bk) * V[:, k] - C * V[:, k - 1]
+    return V
+
+
+def _series(c, a, b, x):
+    """sum_k c_k P_k^{(a,b)}(x) by the forward recurrence (complex a, b, c)."""
+    x = np.asarray(x, dtype=float)
+    out = np.zeros(x.shape, dtype=complex)
+    n = len(c)
+    if n == 0:
+        return out
+    p0 = np.ones(x.shape, dtype=complex)
+    out += c[0] * p0
+    if n == 1:
+        return out
+    ap1 = a + 1.0
+    abp2 = ap1 + (b + 1.0)
+    p1 = ap1 + 0.5 * abp2 * (x - 1.0)
+    out += c[1] * p1
+    for k in range(1, n - 1):
+        s = 2.0 * (k - 1) + abp2
+        d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+        A = (s + 1.0) * (s + 2.0) * s / d
+        Bk = (s + 1.0) * (a * a - b * b) / d
+        C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
+        p0, p1 = p1, (A * x + Bk) * p1 - C * p0
+        out += c[k + 1] * p1
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _projector(N, alpha, beta):
+    """The projection of a mode with exponents (alpha, beta) onto P_j^{(-alpha,-beta)},
+    j < N: the nodes (the roots of P_N^{(-Re alpha, -Re beta)}) and a function of the
+    values there returning the N coefficients (the module docstring, "The projection")."""
+    ar, br = -alpha.real, -beta.real
+    x, w = gauss_jacobi_cached(N, ar, br)
+    if alpha.imag == 0.0 and beta.imag == 0.0:
+        # Gauss-Jacobi: d_j = sum_i w_i g_i P_j(x_i) / h_j
+        V = jacobi_vandermonde(N, ar, br, x)
+        Wt = (V * w[:, None]).T / jacobi_norms_cached(N, ar, br)[:, None]
+        return x, lambda g: Wt @ g
+    V = _jacobi_columns(N, -alpha, -beta, x)
+    sw = np.sqrt(w)
+    S = sw[:, None] * V
+    col = np.linalg.norm(S, axis=0)
+    lu = scipy.linalg.lu_factor(S / col, check_finite=False)
+    return x, lambda g: scipy.linalg.lu_solve(lu, sw * g, check_finite=False) / col
+
+
+def _weight(e: ModeExponents, u):
+    """(1-u)^alpha (1+u)^beta at u in [-1, 1] (0 at a bounded end)."""
+    u = np.asarray(u, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w = np.exp(e.alpha * np.log1p(-u) + e.beta * np.log1p(u))
+    w = np.where((u == 1.0) | (u == -1.0), 0.0, w)
+    return w
+
+
+def _mu0(e: ModeExponents):
+    """int (1-u)^alpha (1+u)^beta du = 2^{1-kappa}/Gamma(2-kappa) Gamma(1+alpha)Gamma(1+beta),
+    by the reflection formula."""
+    prod = -np.pi / e.sin
+    for j in range(0, -e.kappa + 1):
+        prod *= (j - e.alpha)
+    return 2.0 ** (1 - e.kappa) / math.gamma(2 - e.kappa) * prod
+
+
+# --------------------------------------------------------------------------
+# the solver
+# --------------------------------------------------------------------------
+def _per_mode(name, v, m):
+    if isinstance(v, str):
+        return [check_end(name, v)] * m
+    try:
+        vals = list(v)
+    except TypeError:
+        raise InvalidEndConditionError(
+            f'{name} must be "bounded", "singular" or a sequence of them (one per mode), '
+            f"got {v!r}") from None
+    if len(vals) != m:
+        raise InvalidEndConditionError(
+            f"{name} must be one choice for all {m} modes or a sequence of {m} (one per mode, "
+            f"in the order of system_modes), got {len(vals)} entries")
+    return [check_end(f"{name}[{k}]", x) for k, x in enumerate(vals)]
+
+
+def _check_interval(interval):
+    try:
+        c, d = (float(v) for v in interval)
+    except (TypeError, ValueError):
+        raise InvalidIntervalError(f"interval must be a (c, d) pair, got {interval!r}") from None
+    if not (math.isfinite(c) and math.isfinite(d) and c < d):
+        raise InvalidIntervalError(f"interval = {interval!r}: need finite c < d")
+    return c, d
+
+
+def _call_f(f, s, m):
+    if not callable(f):
+        raise CallableOutputError(f"f must be a vectorised callable f(s), got {type(f).__name__}")
+    try:
+        out = f(s)
+    except Exception as exc:
+        raise CallableOutputError(f"f raised {type(exc).__name__}: {exc}") from exc
+    out = np.asarray(out)
+    if out.dtype.kind == "c":
+        raise CallableOutputError("f must return real values, got complex")
+    try:
+        out = out.astype(float)
+    except (TypeError, ValueError) as exc:
+        raise CallableOutputError(f"f must return real numbers, got {out.dtype}") from exc
+    if out.shape != (m, s.size):
+        raise CallableOutputError(
+            f"f must return shape (m, len(s)) = ({m}, {s.size}) when called with an array of "
+            f"{s.size} points, got {out.shape}")
+    if not np.isfinite(out).all():
+        k, i = np.argwhere(~np.isfinite(out))[0]
+        raise CallableOutputError(f"f returned a non-finite value in component {k} at "
+                                  f"s = {float(s[i])!r}")
+    return out
+
+
+def _totals(total, exps, m):
+    """(indices of the components given, their values): as many as modes of index 1."""
+    p = sum(e.kappa == 1 for e in exps)
+    if total is None:
+        if p:
+            raise SideConditionError(
+                f"total is required: {p} mode(s) have index 1 (both ends singular); give "
+                f"int psi_i for {p} component(s) (a sequence of {m} with None elsewhere)")
+        return [], []
+    try:
+        vals = list(total)
+    except TypeError:
+        raise SideConditionError(f"total must be a sequence of {m} (numbers or None), got "
+                                 f"{total!r}") from None
+    if len(vals) != m:
+        raise SideConditionError(f"total must hold {m} entries (one per component, None where "
+                                 f"not given), got {len(vals)}")
+    idx = [i for i, v in enumerate(vals) if v is not None]
+    if len(idx) != p:
+        raise SideConditionError(
+            f"total gives {len(idx)} value(s), but {p} mode(s) have index 1 (both ends "
+            f"singular): give exactly {p} (None elsewhere)")
+    return idx, [check_finite_real(f"total[{i}]", vals[i], SideConditionError) for i in idx]
+
+
+def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
+    """Solve A psi + (B/pi) PV int_c^d psi(t)/(t - s) dt = f(s) for psi = (psi_1..psi_m).
+
+    Parameters
+    ----------
+    f : callable
+        Vectorised: f(s) for s of shape (N,) returns shape (m, N), real and finite.
+    A, B : array_like, shape (m, m)
+        Real constant coefficients, B invertible (see :func:`system_modes`).
+    n : int
+        Jacobi coefficients per mode (>= 2 where a mode has index 1), at most
+        :data:`N_MAX_SYSTEM`.
+    left, right : {"bounded", "singular"} or a sequence of them
+        The behaviour of each mode at s = c and s = d, one for all modes or one per mode in
+        the order of :func:`system_modes` (conjugate modes must share their choices, so that
+        psi is real).
+    total : sequence of m (float or None), optional
+        int_c^d psi_i ds for as many components i as there are modes of index 1 (both ends
+        singular), None for the others.
+    interval : (c, d), optional
+        Default (-1, 1).
+
+    Returns
+    -------
+    SystemSolution
+
+    Raises
+    ------
+    InvalidCoefficientError, UnsupportedEquationError
+        As :func:`system_modes`.
+    InvalidEndConditionError
+        A choice not "bounded"/"singular", a sequence of the wrong length, or conjugate modes
+        with different choices.
+    InvalidOrderError
+        n not an integer >= 1 (>= 2 with a mode of index 1), or above N_MAX_SYSTEM.
+    SideConditionError
+        ``total`` missing, of the wrong length, with a count of values other than the number
+        of modes of index 1, not finite, or with components that do not fix those modes.
+    InvalidIntervalError
+        ``interval`` not a finite (c, d) with c < d.
+    CallableOutputError
+        f not callable, raising, or not returning finite real values of shape (m, N).
+
+    Warns
+    -----
+    InconsistentEquationWarning
+        A mode of index -1 whose solvability residual d_0 exceeds 1e-8 max abs(g_k).
+    SIEWarning
+        The imaginary part of V phi above 1e-8 of psi (it is rounding for real data).
+
+    Notes
+    -----
+    The method and its derivation: the module docstring and the documentation, Theory:
+    systems of singular integral equations.
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations (1953), ch. 18; F. Erdogan, G. D. Gupta
+    and T. S. Cook (1973), ch. 7 (the Jacobi basis and its dominant identity).
+
+    Examples
+    --------
+    Two copies of (1/pi) PV int sqrt(1 - t^2)/(t - s) dt = -s, mixed by B = [[1, 1], [0, 1]]:
+
+    >>> import numpy as np, sie
+    >>> B = np.array([[1.0, 1.0], [0.0, 1.0]])
+    >>> sol = sie.solve_system(lambda s: B @ np.array([-s, -2 * s]), np.zeros((2, 2)), B,
+    ...                        n=4, left="bounded", right="bounded")
+    >>> np.round(sol(np.array([0.0, 0.6])), 12).tolist()
+    [[1.0, 0.8], [2.0, 1.6]]
+    """
+    modes = system_modes(A, B)
+    m = modes.m
+    lefts, rights = _per_mode("left", left, m), _per_mode("right", right, m)
+    for k, j in enumerate(modes.partner):
+        if (lefts[k], rights[k]) != (lefts[j], rights[j]):
+            raise InvalidEndConditionError(
+                f"modes {k} and {j} (lambda = {modes.lambdas[k]:.6g} and its conjugate) must "
+                f"share their end choices so that psi is real; got {lefts[k]}/{rights[k]} "
+                f"and {lefts[j]}/{rights[j]}")
+    exps = tuple(mode_exponents(l, a, b) for l, a, b in zip(modes.lambdas, lefts, rights))
+    any1 = any(e.kappa == 1 for e in exps)
+    n = check_order(n, 2 if any1 else 1, " (2 where a mode has index 1)" if any1 else "")
+    if n > N_MAX_SYSTEM:
+        raise InvalidOrderError(f"n = {n} is beyond the limit {N_MAX_SYSTEM} of solve_system "
+                                "(a complex mode's projection is a dense O(n^3) solve)")
+    c, d = _check_interval(interval)
+    idx, tvals = _totals(total, exps, m)
+    mid, h = 0.5 * (c + d), 0.5 * (d - c)
+
+    # sample f once at the nodes of all modes (conjugate modes share theirs)
+    rules = [_projector(n - e.kappa, e.alpha, e.beta) for e in exps]
+    keys, starts, xs = {}, [], []
+    pos = 0
+    for e, (x, _) in zip(exps, rules):
+        key = (n - e.kappa, e.alpha.real, e.beta.real)
+        if key not in keys:
+            keys[key] = pos
+            xs.append(x)
+            pos += x.size
+        starts.append(keys[key])
+    u_all = np.concatenate(xs + [_CHECK_POINTS])
+    F = _call_f(f, mid + h * u_all, m)
+    G = modes.project @ F                      # g = V^-1 B^-1 f at every node
+
+    coeffs, consistency = [], []
+    for k, (e, (x, proj), st) in enumerate(zip(exps, rules, starts)):
+        g = G[k, st:st + x.size]
+        dk = proj(g)
+        fac = -(2.0 ** e.kappa) * e.sin
+        if e.kappa == 1:
+            ck = np.concatenate([[0.0], fac * dk])
+            consistency.append(None)
+        elif e.kappa == 0:
+            ck = fac * dk
+            consistency.append(None)
+        else:
+            ck = fac * dk[1:]
+            cons = complex(dk[0])
+            consistency.append(cons)
+            scale = float(np.max(np.abs(g)))
+            if abs(cons) > _CONSISTENCY_TOL * max(scale, 1e-300):
+                warnings.warn(
+                    f"solve_system: mode {k} (lambda = {modes.lambdas[k]:.6g}) has both ends "
+                    f"bounded (index -1) and its data violate the solvability condition: "
+                    f"consistency = {abs(cons):.3g} (max|g| = {scale:.3g}); the returned psi "
+                    "solves the system with that part taken out", InconsistentEquationWarning,
+                    stacklevel=2)
+        coeffs.append(ck.astype(complex))
+
+    mu0 = np.array([_mu0(e) for e in exps])
+    if idx:
+        ones = [k for k, e in enumerate(exps) if e.kappa == 1]
+        others = [k for k, e in enumerate(exps) if e.kappa != 1]
+        V = modes.vectors
+        known = sum((V[idx, k] * mu0[k] * coeffs[k][0] for k in others),
+                    np.zeros(len(idx), complex))
+        Msys = V[np.ix_(idx, ones)] * mu0[ones]
+        if not np.linalg.cond(Msys) < 1e12:
+            raise SideConditionError(
+                f"the totals given (components {idx}) do not fix the null space of the modes of "
+                f"index 1 (modes {ones}): their rows of V are dependent; give other components")
+        x0 = np.linalg.solve(Msys, np.asarray(tvals) / h - known)
+        for k, v in zip(ones, x0):
+            coeffs[k][0] = v
+    for ck in coeffs:
+        ck.flags.writeable = False
+    sol = SystemSolution(modes, exps, tuple(coeffs), tuple(consistency), (c, d), n, mu0)
+    # the imaginary part of V phi, which is rounding for real data
+    vals = sol._modal(_CHECK_POINTS)
+    psi = modes.vectors @ vals
+    size = float(np.max(np.abs(psi)))
+    imag = float(np.max(np.abs(psi.imag))) / size if size > 0 else 0.0
+    object.__setattr__(sol, "imaginary", imag)
+    if imag > _IMAG_WARN:
+        warnings.warn(f"solve_system: psi = V phi has a relative imaginary part {imag:.3g} "
+                      "(rounding would leave ~1e-15); the returned real part is suspect",
+                      SIEWarning, stacklevel=2)
+    return sol
+
+
+@dataclass(frozen=True, eq=False)
+class SystemSolution:
+    """psi = V phi of :func:`solve_system`, phi_k = w_k sum_j c_kj P_j^{(alpha_k,beta_k)}.
+
+    Calling it evaluates psi (real, shape (m, len(s))).
+
+    Attributes
+    ----------
+    modes : SystemModes
+        lambdas, V, the order of the modes.
+    exponents : tuple of ModeExponents
+        Per mode (complex for complex lambda).
+    coefficients : tuple of ndarray of complex
+        c_kj per mode (in the local coordinate u = (s - m)/h).
+    consistency : tuple
+        Per mode: the solvability residual d_0 (complex) for index -1, else None.
+    interval : (float, float)
+    n : int
+    mu0 : ndarray of complex
+        int w_k du per mode.
+    imaginary : float
+        max abs(Im V phi) / max abs(V phi) at seven check points: rounding (~1e-16) for
+        real data.
+
+    References
+    ----------
+    As :func:`solve_system`.
+
+    Examples
+    --------
+    The interface crack in reduced form (b = psi_1 + i psi_2, i beta_D b + H[b] = 1):
+
+    >>> import numpy as np, sie
+    >>> A = np.array([[0.0, -0.3], [0.3, 0.0]])
+    >>> sol = sie.solve_system(lambda s: np.array([1.0 + 0 * s, 0 * s]), A, np.eye(2), n=4,
+    ...                        left="singular", right="singular", total=[0.0, 0.0])
+    >>> sol.imaginary < 1e-15, bool(np.abs(sol.integral()).max() < 1e-15)
+    (True, True)
+    >>> s = np.array([0.5]); bool(np.allclose(sol.cauchy(s), 1.0 * np.array([[1.0], [0.0]])
+    ...                                       - A @ sol(s), atol=1e-14))
+    True
+    """
+    modes: SystemModes
+    exponents: tuple
+    coefficients: tuple
+    consistency: tuple
+    interval: tuple
+    n: int
+    mu0: np.ndarray
+    imaginary: float = float("nan")
+
+    def _local(self, s, open_=False):
+        s = np.asarray(s)
+        if s.dtype.kind == "c" or not np.isfinite(s).all():
+            raise EvaluationPointError("s must be finite real points")
+        c, d = self.interval
+        u = (np.asarray(s, dtype=float) - 0.5 * (c + d)) / (0.5 * (d - c))
+        u = np.where(s == d, 1.0, np.where(s == c, -1.0, u))
+        if open_:
+            bad = (u <= -1.0) | (u >= 1.0)
+            if bad.any():
+                at = float(np.ravel(s)[np.argmax(bad.ravel())])
+                raise EvaluationPointError(
+                    f"s must lie strictly inside ({c!r}, {d!r}) for the Cauchy transform (off "
+                    f"the interval it is not implemented here), got {at!r}")
+        else:
+            bad = (u < -1.0) | (u > 1.0)
+            if bad.any():
+                raise EvaluationPointError(f"s must lie in [{c!r}, {d!r}], got "
+                                           f"{float(np.ravel(s)[np.argmax(bad.ravel())])!r}")
+            for e in self.exponents:
+                if ((u == 1.0) & (e.right == "singular")).any() or \
+                        ((u == -1.0) & (e.left == "singular")).any():
+                    raise EvaluationPointError("psi is infinite at a singular end")
+        return u
+
+    def regular(self, s):
+        """The modal regular parts Phi_k(s) = sum_j c_kj P_j^{(alpha_k,beta_k)}(u), complex,
+        shape (m,) + s.shape (s in [c, d], ends included): phi_k = w_k Phi_k."""
+        c, d = self.interval
+        s = np.asarray(s, dtype=float)
+        u = (s - 0.5 * (c + d)) / (0.5 * (d - c))
+        u = np.where(s == d, 1.0, np.where(s == c, -1.0, u))
+        return np.array([_series(ck, e.alpha, e.beta, u)
+                         for e, ck in zip(self.exponents, self.coefficients)])
+
+    def _modal(self, u):
+        return np.array([_weight(e, u) * _series(ck, e.alpha, e.beta, u)
+                         for e, ck in zip(self.exponents, self.coefficients)])
+
+    def phi(self, s):
+        """The modes phi_k(s) (complex), shape (m,) + s.shape."""
+        return self._modal(self._local(s))
+
+    def __call__(self, s):
+        """psi(s) = Re(V phi(s)), shape (m,) + s.shape, s in [c, d] (not at a singular end
+        of any mode)."""
+        u = self._local(s)
+        vals = self._modal(u.ravel())
+        return (self.modes.vectors @ vals).real.reshape((-1,) + u.shape)
+
+    def cauchy(self, s):
+        """H[psi](s) = (1/pi) PV int_c^d psi(t)/(t - s) dt for s strictly inside (c, d),
+        shape (m,) + s.shape, from the dominant identity (4) of the module docstring."""
+        u = self._local(s, open_=True).ravel()
+        out = []
+        for e, ck in zip(self.exponents, self.coefficients):
+            fac = -(2.0 ** -e.kappa) / e.sin
+            if e.kappa == 1:
+                img = fac * ck[1:]
+            elif e.kappa == 0:
+                img = fac * ck
+            else:
+                img = np.concatenate([[0.0], fac * ck])
+            out.append(-e.lam * _weight(e, u) * _series(ck, e.alpha, e.beta, u)
+                       + _series(img, -e.alpha, -e.beta, u))
+        return (self.modes.vectors @ np.array(out)).real.reshape((-1,) + np.shape(s))
+
+    def integral(self):
+        """int_c^d psi ds, shape (m,)."""
+        c, d = self.interval
+        I = np.array([mu * ck[0] for mu, ck in zip(self.mu0, self.coefficients)])
+        return 0.5 * (d - c) * (self.modes.vectors @ I).real
