@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import functools
 import math
+import weakref
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -64,6 +65,7 @@ _GROWTH = 4.0          # load ratio (from the origin) of a continuation step aft
 _GROWTH_MAX = 256.0    # ... squared after each step that works, up to this
 _CHECK_U = np.cos(np.pi * (np.arange(64) + 0.5) / 64)     # where p >= 0 is checked
 _INNER = np.abs(_CHECK_U) < 0.9                           # "inside a zone" for a split
+_REFINE_U = np.cos(np.pi * (np.arange(33) + 0.5) / 33)    # where n and 2n are compared
 _MIN_RATIO = 1e-9      # the finest load step (relative) before giving up
 _TAIL = 1e-6           # n is doubled while the last coefficients exceed this (relative),
                        # up to ZoneEquations.n_max
@@ -626,9 +628,9 @@ def _inspect(face, eq, state, gap=True):
     tol = _resolution(sol)
     ok = True
     p_inner, p_where = [], []
-    for z, piece in zip(state.zones, sol.pieces):
+    for z, piece, (p, _) in zip(state.zones, sol.pieces,
+                                zone_pressures(sol, refine=eq.n_max is not None)):
         X = z.points(_CHECK_U)
-        p = _check_weight(piece.alpha, piece.beta) * piece.phi_local(_CHECK_U)
         top = pressure_top(p)
         if not pressure_holds(p, tol, top) or _lowest_dip(piece, p, top) < -tol * top:
             ok = False
@@ -751,11 +753,52 @@ def _valley(face, zones, g, X):
 
 
 @functools.lru_cache(maxsize=64)
-def _check_weight(alpha, beta):
-    """(1 - u)^alpha (1 + u)^beta at the check points (read-only)."""
-    out = (1.0 - _CHECK_U) ** alpha * (1.0 + _CHECK_U) ** beta
+def _check_weight(alpha, beta, u_key="check"):
+    """(1 - u)^alpha (1 + u)^beta at the check points (``u_key`` "check": _CHECK_U;
+    "both": _CHECK_U and then _REFINE_U; read-only)."""
+    u = _CHECK_U if u_key == "check" else _BOTH_U
+    out = (1.0 - u) ** alpha * (1.0 + u) ** beta
     out.flags.writeable = False
     return out
+
+
+_BOTH_U = np.concatenate([_CHECK_U, _REFINE_U])
+_PRESSURES = weakref.WeakKeyDictionary()      # solution -> zone_pressures(solution)
+
+
+def zone_pressures(sol, refine=False):
+    """Per zone (piece) of the solution ``sol``: (p at the local check points _CHECK_U,
+    p at the points _REFINE_U where :func:`contact.solver._refine` compares n and 2n, or
+    None without ``refine``), read-only.  With ``refine`` phi is evaluated once at both
+    sets (with breaks each evaluation sums the correction's rules: one call is cheaper than
+    two); kept as long as the solution lives (a state is checked by the continuation, then
+    compared with its refinement; the refinement compared, then checked)."""
+    got = _PRESSURES.get(sol)
+    if got is not None and (got[0][1] is not None or not refine):
+        return got
+    m = _CHECK_U.size
+    out = []
+    for k, piece in enumerate(sol.pieces):
+        if got is not None:             # the check points known: the others alone
+            q = _weight_at(piece.alpha, piece.beta, _REFINE_U) * piece.phi_local(_REFINE_U)
+            p = got[k][0]
+        elif refine:
+            both = _check_weight(piece.alpha, piece.beta, "both") * piece.phi_local(_BOTH_U)
+            p, q = both[:m], both[m:]
+        else:
+            p, q = _check_weight(piece.alpha, piece.beta) * piece.phi_local(_CHECK_U), None
+        for v in (p, q):
+            if v is not None:
+                v.flags.writeable = False
+        out.append((p, q))
+    out = tuple(out)
+    _PRESSURES[sol] = out
+    return out
+
+
+def _weight_at(alpha, beta, u):
+    """(1 - u)^alpha (1 + u)^beta at points u."""
+    return (1.0 - u) ** alpha * (1.0 + u) ** beta
 
 
 @functools.lru_cache(maxsize=8)

@@ -84,14 +84,15 @@ def _checked(fn, X, what):
     finite values, else ProfileCallableError naming what went wrong (:func:`_called`)."""
     X = np.asarray(X, dtype=float)
     out = np.asarray(_called(fn, X, what))
-    if np.iscomplexobj(out):
+    # (the array methods, not numpy's functions: this runs on every call of the slope)
+    if out.dtype.kind == "c":
         raise ProfileCallableError(f"the punch {what} must return real values, got complex")
-    out = np.asarray(out, dtype=float)
+    out = out.astype(float, copy=False)
     if out.shape != X.shape:
         raise ProfileCallableError(
             f"the punch {what} must be vectorised: called with an array of shape {X.shape} "
             f"it returned shape {out.shape}")
-    if not np.all(np.isfinite(out)):
+    if not np.isfinite(out).all():
         bad = float(X.ravel()[np.flatnonzero(~np.isfinite(out.ravel()))[0]])
         raise ProfileCallableError(f"the punch {what} returned a non-finite value at X = {bad!r}")
     return out

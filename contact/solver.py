@@ -33,7 +33,8 @@ from sie.exponents import MIN_B_OVER_A, check_coefficients
 from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
 from .kernel import contact_kernel, own_errors
-from .continuation import ZoneState, follow_last_again, follow_load, inspect_state
+from .continuation import (ZoneState, follow_last_again, follow_load, inspect_state,
+                           zone_pressures)
 from .lockstep import first_steps
 from .errors import (ContactInputError, ContactLossError, DirectionError, FrictionError, LoadError,
                      check_finite, real_array)
@@ -725,18 +726,18 @@ def _refine(face, eq, state, tol, punch, n_start):
         zs, ts, sol, J = eq.solve_ends(list(state.zones), list(state.totals), lo=lo, hi=hi,
                                        jacobian=state.jacobian)
         state = ZoneState(state.load, tuple(zs), tuple(ts), sol, J)
-    u = np.cos(np.pi * (np.arange(33) + 0.5) / 33)
     while True:
         eq2 = replace(eq, n=2 * eq.n)
         zs, ts, sol2, J = eq2.solve_ends(list(state.zones), list(state.totals), lo=lo, hi=hi,
                                          jacobian=state.jacobian)
         width = zs[-1].d - zs[0].c
         d_ends = max(max(abs(a.c - b.c), abs(a.d - b.d)) for a, b in zip(zs, state.zones)) / width
-        X = np.concatenate([z.points(u) for z in zs])
-        Xo = np.concatenate([z.points(u) for z in state.zones])
-        # compare phi-like values on each zone's own normalised points
-        p1, p2 = state.solution(Xo), sol2(X)
-        d_p = np.max(np.abs(p2 - p1)) / max(np.max(np.abs(p2)), np.finfo(float).tiny)
+        # compare the pressures at each zone's own normalised points (the same local points
+        # of the old and the new zones; evaluated with the check points of each solution)
+        p1 = np.concatenate([q for _, q in zone_pressures(state.solution, refine=True)])
+        p2 = np.concatenate([q for _, q in zone_pressures(sol2, refine=True)])
+        d_p = float(np.abs(p2 - p1).max()) / max(float(np.abs(p2).max()),
+                                                  np.finfo(float).tiny)
         new = ZoneState(state.load, tuple(zs), tuple(ts), sol2, J)
         # the next doubling must fit one zone's cap and, for several zones, sie's dense
         # system (N_MAX_DENSE unknowns in all)

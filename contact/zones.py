@@ -50,6 +50,7 @@ _FLOOR = 1e-9       # residuals below this that no step reduces are rounding: co
 _NEAR_FLOOR = 1e-12  # residuals below this that a step does not halve are rounding: converged
 _STEP_TOL = 1e-13    # see solve_ends: the error left (relative to the width) to stop at
 _F_TOL = 5e-14       # ... and the residuals
+_CONVERGED = 32 * np.finfo(float).eps     # residuals at this need no step
 _SIE_END = {FREE: "bounded", CORNER: "singular"}
 _NINE = np.linspace(0.0, 1.0, 9)     # where the slope scale of a zone is sampled
 
@@ -200,7 +201,9 @@ class ZoneEquations:
 
     def _functionals(self, z):
         """sie.Functionals of one zone on its own (no other zone)."""
-        br = [float(z.local(x)) for x in self.breaks if z.c < x < z.d]
+        # Zone.local in Python floats (the same operations)
+        m, h = 0.5 * (z.c + z.d), 0.5 * (z.d - z.c)
+        br = [float((x - m) / h) for x in self.breaks if z.c < x < z.d]
         br = [u for u in br if abs(u) < 1.0 - 1e-12]
         f = lambda u: self.slope(z.points(u))      # noqa: E731
         # on [-1, 1]: the equation and its rule are prepared once, the zone maps onto it
@@ -222,8 +225,10 @@ class ZoneEquations:
 
     def _slope_scale(self, zones):
         """The size of H' on the zones (:func:`slope_scale`)."""
-        return float(slope_scale(self.slope, [[z.c for z in zones]], [[z.d for z in zones]],
-                                 self.b, self.load)[0])
+        # slope_scale for one case, without its array bookkeeping (the same points and sums)
+        X = np.concatenate([z.c + (z.d - z.c) * _NINE for z in zones])
+        s = float(np.abs(self.slope(X)).max())
+        return s if s > 0.0 else abs(self.b) * self.load / max(z.d - z.c for z in zones)
 
     # -- Newton ---------------------------------------------------------------------------------
     def newton(self, zones, totals=None, *, iterations=40, lo=-math.inf, hi=math.inf):
@@ -255,6 +260,7 @@ class ZoneEquations:
         raw = self._raw_residual if budget is None else _Budgeted(self._raw_residual, budget)
         R, sol = raw(zones, totals)
         F = R / norms
+        size = _size(F)                 # max |F|, kept with F
         scale = self._fd_steps(zones, totals) * 1e7          # the zone widths (and loads)
         # the Jacobian is kept relative to the scales of the residuals and of the unknowns,
         # where it does not change when the zones grow alike (exactly so on a homogeneous
@@ -263,7 +269,7 @@ class ZoneEquations:
             jacobian.shape == (F.size, x.size) else None
         fresh = False
         for _ in range(iterations):
-            if np.max(np.abs(F)) <= 32 * np.finfo(float).eps:
+            if size <= _CONVERGED:
                 break
             if J is None:
                 J, fresh = self._fd_jacobian(x, F, zones, totals, lo, hi, norms, raw), True
@@ -275,17 +281,18 @@ class ZoneEquations:
                                            f"singular at ends {[(z.c, z.d) for z in zones]}") from None
                 J = None
                 continue
-            step = self._damped_step(x, dx, F, zones, lo, hi, norms, raw)
-            if step is None and np.max(np.abs(F)) <= _FLOOR:
+            step = self._damped_step(x, dx, size, zones, lo, hi, norms, raw)
+            if step is None and size <= _FLOOR:
                 if not fresh:               # an updated Jacobian: a fresh one may still step
                     J = None
                     continue
                 break                       # at the rounding floor of the residuals
-            if step is not None and np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)) \
-                    and np.max(np.abs(step[2])) <= _NEAR_FLOOR:
-                x, zones, totals, F, sol = step[0], step[1], step[4], step[2], step[3]
+            size_n = None if step is None else step[5]
+            if step is not None and size_n > 0.5 * size and size_n <= _NEAR_FLOOR:
+                x, zones, totals, F, sol, size = step[0], step[1], step[4], step[2], step[3], \
+                    size_n
                 break                       # next to the floor: what is left is rounding
-            if step is None or np.max(np.abs(step[2])) > 0.5 * np.max(np.abs(F)):
+            if step is None or size_n > 0.5 * size:
                 if not fresh:               # an updated Jacobian that stopped working
                     J = None
                     continue
@@ -295,11 +302,11 @@ class ZoneEquations:
                         "pass its X positions as breaks=")
                     raise ContactLossError(
                         "Newton's method for the contact ends made no progress at ends "
-                        f"{[(z.c, z.d) for z in zones]} (residual {np.max(np.abs(F)):.3g})"
+                        f"{[(z.c, z.d) for z in zones]} (residual {size:.3g})"
                         f"{hint}")
-            xn, zn, Fn, soln, tn = step
+            xn, zn, Fn, soln, tn, _ = step
             s = xn - x
-            if np.max(np.abs(F)) > _NEAR_FLOOR:
+            if size > _NEAR_FLOOR:
                 # Broyden's ("good") update; not from residuals at the rounding floor, whose
                 # difference is noise along a step of the same size
                 J = J + np.outer(Fn - F - J @ s, s) / (s @ s)
@@ -307,17 +314,16 @@ class ZoneEquations:
             # converged once the residuals are at 5e-14 and the error left in the ends,
             # estimated as the step times the factor by which it cut the residual (the
             # iteration contracts at least that fast), is below 1e-13 of each zone's width
-            cut = np.max(np.abs(Fn)) / np.max(np.abs(F))
-            small = (np.max(np.abs(Fn)) <= _F_TOL
-                     and cut * np.max(np.abs(s) / scale) <= _STEP_TOL)
-            x, zones, totals, F, sol = xn, zn, tn, Fn, soln
+            cut = size_n / size
+            small = size_n <= _F_TOL and cut * _size(s / scale) <= _STEP_TOL
+            x, zones, totals, F, sol, size = xn, zn, tn, Fn, soln, size_n
             if small:
                 break
         else:
-            if np.max(np.abs(F)) > 1e-10:
+            if size > 1e-10:
                 raise ContactLossError(
                     f"Newton's method for the contact ends did not converge (residual "
-                    f"{np.max(np.abs(F)):.3g} after {iterations} iterations)")
+                    f"{size:.3g} after {iterations} iterations)")
         if sol is None:
             sol = self.solve(zones, totals)
         return zones, totals, sol, (None if J is None else J * scale[None, :])
@@ -340,19 +346,21 @@ class ZoneEquations:
             J[:, k] = (raw(zk, tk)[0] / norms - F) / steps[k]
         return J
 
-    def _damped_step(self, x, dx, F, zones, lo, hi, norms, raw):
+    def _damped_step(self, x, dx, size, zones, lo, hi, norms, raw):
         """x + t dx for the largest t = 1, 1/2, ... that keeps the zones ordered and reduces
-        max|F| (down to t = 1e-3; only t = 1 once max|F| is at the rounding floor, where a
-        shorter step cannot help); None if none does."""
-        t, t_min = 1.0, (1e-3 if np.max(np.abs(F)) > _FLOOR else 1.0)
+        max|F| (``size``; down to t = 1e-3; only t = 1 once max|F| is at the rounding floor,
+        where a shorter step cannot help): (x, zones, F, solution, totals, max|F|) there;
+        None if none does."""
+        t, t_min = 1.0, (1e-3 if size > _FLOOR else 1.0)
         while t >= t_min:
             xn = x + t * dx
             zn, tn = self.unpack(xn, zones)
             if _ordered(zn, lo, hi):
                 Rn, soln = raw(zn, tn)
                 Fn = Rn / norms
-                if np.max(np.abs(Fn)) < np.max(np.abs(F)):
-                    return xn, zn, Fn, soln, tn
+                size_n = _size(Fn)
+                if size_n < size:
+                    return xn, zn, Fn, soln, tn, size_n
             t *= 0.5
         return None
 
@@ -392,6 +400,12 @@ def _equation(a, b, kinds, kernel=None):
     return sie.Equation(a=a, b=b, left=[_SIE_END[l] for l, _ in kinds],
                         right=[_SIE_END[r] for _, r in kinds], intervals=intervals,
                         kernel=None if kernel is None else kernel.slope)
+
+
+def _size(v):
+    """max |v| of a small array, as a float (the method, not numpy's function: Newton's
+    loop takes it of every residual)."""
+    return float(np.abs(v).max())
 
 
 def _ordered(zones, lo, hi):

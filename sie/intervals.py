@@ -115,16 +115,21 @@ def split_breaks(breaks, intervals):
     """Breaks (real coordinates) per interval, in local coordinates, sorted, without repeats.
 
     Each break must lie strictly inside one interval."""
-    if isinstance(breaks, (tuple, list)) and len(breaks) == 0:
-        return [np.empty(0) for _ in intervals]
-    br = real_array("breaks", breaks, InvalidBreakpointError).ravel()
-    if not np.all(np.isfinite(br)):
-        raise InvalidBreakpointError(f"breaks must be finite, got {br.tolist()}")
+    vals = None
+    if isinstance(breaks, (tuple, list)):
+        if len(breaks) == 0:
+            return [np.empty(0) for _ in intervals]
+        if all(type(x) is float for x in breaks):
+            vals = list(breaks)     # Python floats already: no conversion through numpy
+    if vals is None:
+        vals = real_array("breaks", breaks, InvalidBreakpointError).ravel().tolist()
+    if not all(math.isfinite(x) for x in vals):
+        raise InvalidBreakpointError(f"breaks must be finite, got {vals}")
     out = [[] for _ in intervals]
     # Python floats: the local coordinate (x - m) / h is Interval.local's (x lies strictly
     # inside, off both ends), without numpy's cost per scalar (a contact search splits the
     # breaks of every trial zone)
-    for x in br.tolist():
+    for x in vals:
         for j, iv in enumerate(intervals):
             if iv.c < x < iv.d:
                 u = (x - 0.5 * (iv.c + iv.d)) / (0.5 * (iv.d - iv.c))

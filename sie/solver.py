@@ -332,7 +332,8 @@ def block_functionals(block, f, n, breaks):
     rule = _dominant_rule(block.a, block.b, _check_n(n, e, ""), block.left, block.right)
     iv = block.interval
     local = f if (iv.c, iv.d) == (-1.0, 1.0) else (lambda u: f(iv.real(u)))
-    br = split_breaks(breaks, (iv,))[0] if np.size(breaks) else ()
+    some = len(breaks) if isinstance(breaks, (list, tuple)) else np.size(breaks)
+    br = split_breaks(breaks, (iv,))[0] if some else ()
     fn = rule(local, br)
     if fn.integral is None or iv.h == 1.0:
         return fn
@@ -400,8 +401,8 @@ class _DominantRule:
         fs = call_checked(f, "f", (x,), x.shape)
         q = rule.x.size
         wf = rule.omega * fs[:q]
-        p_end = rule.corr * fs[q] * rule.end_values(2) if rule.end else np.zeros(2)
-        f0 = (float(np.sum(wf)) + p_end[0]) / self._h[0]
+        p_end = rule.corr * fs[q] * rule.end_values(2) if rule.end else (0.0, 0.0)
+        f0 = (float(wf.sum()) + p_end[0]) / self._h[0]
         if self.kappa == 0:
             return Functionals(self._scale * f0, None, e.alpha, e.beta, 0)
         f1 = (float(wf @ _p1(e, rule.x)) + p_end[1]) / self._h[1]
