@@ -57,8 +57,9 @@ from .cauchy import _FAR_TERMS, Weight, _log_ratio, f0_closed, l0
 from .errors import call_checked
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_series
-from .quadrature import _power
+from .quadrature import _COUNT_LADDER, _END_EXPONENT, _composite_pieces, _power
 from .special import jacobi_moment_shifted
+from .unknowns import _EXTRA_PER_PIECE
 
 __all__ = ["InversionRemainder", "log_far"]
 
@@ -993,6 +994,7 @@ class InversionRemainder:
     _log_ends: tuple | None = None      # the log potential of w delta_phi at -1 and +1
     _far_moments: np.ndarray | None = None  # far_coefficients()
     _interp: tuple | None = None        # barycentric data of delta_phi on the w_rule pieces
+    _splits: np.ndarray | None = None   # _near_splits()
 
     @classmethod
     def build(cls, piece, a, b, f, other, breaks, s, ws, fs, g_coef):
@@ -1001,7 +1003,7 @@ class InversionRemainder:
         callables of the local coordinate (``other`` None when there are none); ``s, ws, fs``:
         the composite projection rule and f there; ``g_coef``: projections of f - other."""
         self = cls(piece, a, b, f, other, [], g_coef)
-        q = s.size // (breaks.size + 1)
+        q = piece.n - piece.kappa + _EXTRA_PER_PIECE     # the projection's nodes per piece
         # I(x) for x close to a break c: in the neighbouring piece the integrand has a pole
         # at distance |x - c|, so the pieces are graded toward the breaks (Gauss-Legendre on
         # a geometric mesh resolves a pole at any distance; without it phi(c + 1e-3) is
@@ -1286,7 +1288,8 @@ class InversionRemainder:
         out = np.zeros(x0.shape, dtype=complex)
         delta = np.maximum(np.abs(zeta), _DELTA_FLOOR)
         levels = int(np.ceil(math.log(2.0 / delta.min()) / math.log(_NEAR_RATIO))) + 1
-        per_point = 2 * levels + self.breaks.size + 3
+        splits = self._near_splits()
+        per_point = 2 * levels + splits.size + 3
         # r is a polynomial of degree < M (the projection) plus f - other, analytic between
         # breaks; p(t)/(t - v) = (polynomial of degree < M - 1) + p(v)/(t - v), so M/2 nodes
         # more than the pole needs integrate the polynomial part exactly on any piece; fewer
@@ -1303,7 +1306,7 @@ class InversionRemainder:
             # >= 2/3 of its own length, and the end piece (Gauss-Jacobi) sees x0 at >= 1/7
             up = np.where(steps * _KEEP_END <= lmc[:, None], steps, 0.0)
             down = np.where(steps * _KEEP_END <= lpc[:, None], -steps, 0.0)
-            brk = self.breaks[None, :] - xc[:, None]
+            brk = splits[None, :] - xc[:, None]
             edges = np.concatenate([-lpc[:, None], down, np.zeros((P, 1)), up, brk,
                                     lmc[:, None]], axis=1)
             edges.sort(axis=1)
@@ -1324,6 +1327,21 @@ class InversionRemainder:
             out[sl] = (np.bincount(pt, weights=terms.real, minlength=P)
                        + 1j * np.bincount(pt, weights=terms.imag, minlength=P)) / math.pi
         return out
+
+    def _near_splits(self):
+        """Where :meth:`_near_j` splits [-1, 1] whatever the point: the breaks, and points
+        that grade the gap between a break and an end it lies close to toward the break,
+        end -+ delta 4^j (delta the break's distance to the end), until _NEAR_Q nodes
+        resolve that end's factor on the rest of the gap
+        (:func:`sie.quadrature._composite_pieces`).  Without them the piece that ends at
+        the break sees the end's branch point at a fraction of its length (a break 1e-4
+        from +1 left the transform 1e-7 from -1 off by 1e-3 at n = 48).  Computed once."""
+        if self._splits is None:
+            lo, hi, _, graded = _composite_pieces(self.breaks, _NEAR_Q, _NEAR_Q,
+                                                  _NEAR_RATIO, _END_EXPONENT, _COUNT_LADDER)
+            self._splits = np.unique(np.concatenate([self.breaks, hi[:-1]])) if graded \
+                else self.breaks
+        return self._splits
 
     # -- logarithmic potential -------------------------------------------------------
     def log_potential(self, v, ends=None, l0_values=None):

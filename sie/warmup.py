@@ -39,6 +39,9 @@ def warm_up() -> None:
         sol.phi(np.array([0.1]))
         sol.cauchy(np.array([0.2, 1.5]))
         sol.log_potential(np.array([-1.5, 0.2, 1.5, 3.0]))   # by clusters, and from moments
+        # a break next to an end: the graded composite rule and near-line splits
+        solve(f, a=0.7, b=1.0, n=12, left="bounded", right="bounded",
+              breaks=(0.9999,)).cauchy(np.array([0.2 + 1e-3j]))
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
         eqs = Equation(a=[0.7, -0.3], b=1.0, left="bounded", right="bounded",
