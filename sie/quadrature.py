@@ -13,7 +13,7 @@ from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_project
 from .special import jacobi_end_values, jacobi_moment_shifted
 
-__all__ = ["WeightedRule", "composite_rule", "composite_weighted_rule"]
+__all__ = ["WeightedRule", "composite_rule", "composite_weighted_rule", "stacked_rules"]
 
 
 # --------------------------------------------------------------------------
@@ -294,10 +294,18 @@ def _graded_table(q, alpha, beta, extra):
     nodes and with each count of ``extra``, and Gauss-Jacobi (0, beta), (alpha, 0) and
     (alpha, beta) with q nodes; with the offset of the Legendre rule of each count (-1:
     none) and the offsets of the three end rules."""
-    counts = sorted(set(extra) | {q})
+    return stacked_rules(sorted(set(extra) | {q}), q, alpha, beta)
+
+
+def stacked_rules(counts, q_end, alpha, beta):
+    """Gauss-Legendre rules with each of ``counts`` (ascending) nodes and Gauss-Jacobi
+    (0, beta), (alpha, 0), (alpha, beta) with ``q_end`` nodes, concatenated for a compiled
+    composite rule to take its pieces from: (nodes, weights, offset of the Legendre rule of
+    each count (-1: none), offsets of the end rules at -1, at +1 and of one piece spanning
+    both)."""
     rules = [gauss_jacobi_cached(c, 0.0, 0.0) for c in counts]
-    rules += [gauss_jacobi_cached(q, 0.0, beta), gauss_jacobi_cached(q, alpha, 0.0),
-              gauss_jacobi_cached(q, alpha, beta)]
+    rules += [gauss_jacobi_cached(q_end, 0.0, beta), gauss_jacobi_cached(q_end, alpha, 0.0),
+              gauss_jacobi_cached(q_end, alpha, beta)]
     sizes = [r[0].size for r in rules]
     starts = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
     legendre = np.full(max(counts) + 1, -1, dtype=np.int64)

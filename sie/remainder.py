@@ -57,7 +57,7 @@ from .cauchy import _FAR_TERMS, Weight, _log_ratio, f0_closed, l0
 from .errors import call_checked
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_series
-from .quadrature import _COUNT_LADDER, _END_EXPONENT, _composite_pieces, _power
+from .quadrature import _COUNT_LADDER, _END_EXPONENT, _composite_pieces, _power, stacked_rules
 from .special import jacobi_moment_shifted
 from .unknowns import _EXTRA_PER_PIECE
 
@@ -159,15 +159,7 @@ def _rule_table(q, q_small, shift, alpha, beta, extra=()):
     qq = q + shift
     top = _table_top(q, q_small, shift)
     counts = sorted(set(range(min(_HP_MIN, q_small + 1) + shift, top)) | {qq} | set(extra))
-    rules = [gauss_jacobi_cached(c, 0.0, 0.0) for c in counts]
-    rules += [gauss_jacobi_cached(qq, 0.0, beta), gauss_jacobi_cached(qq, alpha, 0.0),
-              gauss_jacobi_cached(qq, alpha, beta)]
-    sizes = [r[0].size for r in rules]
-    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
-    legendre = np.full(max(counts) + 1, -1, dtype=np.int64)
-    legendre[counts] = starts[:len(counts)]
-    return (np.concatenate([r[0] for r in rules]), np.concatenate([r[1] for r in rules]),
-            legendre, starts[len(counts):].copy())
+    return stacked_rules(counts, qq, alpha, beta)
 
 
 def _table_top(q, q_small, shift):
