@@ -302,7 +302,13 @@ def test_load(punch, cname, mu):
 # ----------------------------------------------------------------------------------------------
 # 3. sigma_XX inside, at bounded ends and outside on both sides (near, |s| < 4, |s| > 4)
 # ----------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("punch,cname,mu", CASES, ids=CASE_IDS)
+#: sigma_XX needs an mpmath Hilbert transform per point: no friction, and 0.3 and 0.5 with
+#: opposite signs (the exponent branches either side of 1/2)
+SIGMA_CASES = [c for c in CASES if c[2] in (0.0, 0.3, -0.5)]
+
+
+@pytest.mark.parametrize("punch,cname,mu", SIGMA_CASES,
+                         ids=[f"{p}-{c}-mu{m:+.1f}" for p, c, m in SIGMA_CASES])
 @pytest.mark.slow
 def test_sigma_xx(punch, cname, mu):
     sol = solution(punch, cname, mu)
