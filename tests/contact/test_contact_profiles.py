@@ -24,8 +24,6 @@ import contact
 
 MAT = contact.zhou2014()
 SPEEDS = (0.0, 0.3, 0.6, 0.9)
-#: the load curves of every face: at rest, a moderate speed and near the Rayleigh speed
-LOAD_RANGE_SPEEDS = (0.0, 0.6, 0.9)
 FRICTION = ((0.0, -1), (0.3, -1), (0.3, 1))
 LOADS = np.geomspace(1e-6, 1e2, 9)
 
@@ -60,6 +58,10 @@ def _faces():
 
 
 FACES = _faces()
+#: the load curves of every face at rest, at a moderate speed and near the Rayleigh speed;
+#: the bump (two zones that appear and merge, its slowest curves) at rest and near c_R
+LOAD_RANGE_CASES = [(name, speed) for name in FACES for speed in (0.0, 0.6, 0.9)
+                    if not (name == "bump" and speed == 0.6)]
 
 
 def _gap(res, X, m=32):
@@ -127,8 +129,7 @@ def check_contact(res):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", list(FACES))
-@pytest.mark.parametrize("speed", LOAD_RANGE_SPEEDS)
+@pytest.mark.parametrize("name,speed", LOAD_RANGE_CASES)
 @pytest.mark.parametrize("friction,direction", FRICTION)
 def test_faces_over_the_load_range(name, speed, friction, direction):
     """Loads 1e-6 .. 1e2 in one continuation from first touch: every result passes the
