@@ -115,15 +115,17 @@ def test_phases_of_a_run_add_up_to_its_wall_time():
 
 @pytest.mark.slow
 def test_processes_alone_count_what_each_solved():
-    """processes_alone: n processes' summed rate is positive and finite, about n times one
-    process's at most (they solve the same cases), and the slowest of them is at least as
-    slow as the fastest."""
+    """processes_alone: n processes' summed rate is positive and finite, and the slowest of
+    them is at least as slow as the fastest.  Two processes count about twice one at most
+    (they solve the same cases); the bound is 3.5 times: the readings are 0.2 s apart on
+    a shared machine whose speed drifts (2.73 times one was seen), and each process counted
+    twice would give about 4 times."""
     with bench_sweep.processes_alone(bench_sweep.sweep_toml(30, 30), cases=300,
                                      seconds=0.2) as alone:
         alone(1)        # (in a fresh clone the first reading was low: 2.8 times one for two)
         (one, spread1), (two, spread2) = alone(1), alone(2)
     assert spread1 == 1.0 and spread2 >= 1.0
-    assert 0.0 < one < math.inf and 0.0 < two < 2.5 * one
+    assert 0.0 < one < math.inf and 0.0 < two < 3.5 * one
 
 
 class _Cases:
