@@ -238,13 +238,17 @@ def test_rotation_convention_is_active():
     assert np.abs(t - expected).max() <= 1e-13 * np.abs(m.C).max()
 
 
-def test_cubic_crystal_turned_45_degrees():
-    C11, C12, C44 = 168.4, 121.4, 75.4              # copper, GPa
+def _cubic(C11, C12, C44):
     C = np.zeros((6, 6))
     C[:3, :3] = C12
     C[[0, 1, 2], [0, 1, 2]] = C11
     C[[3, 4, 5], [3, 4, 5]] = C44
-    m = Anisotropic(C).rotated(Rotation.from_euler("z", 45.0, degrees=True))
+    return C
+
+
+def test_cubic_crystal_turned_45_degrees():
+    C11, C12, C44 = 168.4, 121.4, 75.4              # copper, GPa
+    m = Anisotropic(_cubic(C11, C12, C44)).rotated(Rotation.from_euler("z", 45.0, degrees=True))
     plane = contact.Orthotropic((C11 + C12) / 2 + C44, (C11 + C12) / 2 - C44,
                                 (C11 + C12) / 2 + C44, (C11 - C12) / 2)
     expected = Anisotropic.from_orthotropic(plane, C13=C12, C23=C12, C33=C11, C44=C44,
@@ -299,6 +303,52 @@ def test_triclinic_against_barnett_lothe_integral(triclinic, fraction):
     r = triclinic.surface_response(c)
     assert np.abs(r.slope_hilbert - M).max() <= 1e-12 * np.abs(M).max()
     assert np.abs(r.slope_local - L).max() <= 1e-12 * np.abs(M).max()
+
+
+def orthorhombic_secular(X, C11, C22, C12, C66):
+    """The secular equation of the Rayleigh wave of an orthorhombic half-space travelling
+    along a symmetry axis X with the surface normal Y along another, in X = rho v^2
+    (Chadwick, J. Sound Vib. 47 (1976) 39-52; Royer & Dieulesaint, J. Acoust. Soc. Am. 76
+    (1984) 1438-1444; Destrade, Mech. Mater. 35 (2003) 931-939, its orthorhombic case):
+
+        C22 C66 (C11 - X) X^2 = (C66 - X) (C22 (C11 - X) - C12^2)^2."""
+    return C22 * C66 * (C11 - X) * X * X - (C66 - X) * (C22 * (C11 - X) - C12 ** 2) ** 2
+
+
+@pytest.mark.parametrize("crystal,axis,constants", [
+    # copper (C11, C12, C44 = 168.4, 121.4, 75.4 GPa) turned 45 degrees about Z: the (110)
+    # surface, the wave along [1-10]; in the sagittal plane C11' = C22' = (C11 + C12)/2 +
+    # C44, C12' = (C11 + C12)/2 - C44, C66' = (C11 - C12)/2
+    ("copper", "z", (168.4, 121.4, 75.4)),
+    # niobium (246.5, 133.3, 28.7 GPa: anisotropy 2 C44 / (C11 - C12) = 0.51) turned 45
+    # degrees about the normal Y: the (001) surface, the wave along [110]; C11' = (C11 +
+    # C12)/2 + C44, C22' = C11, C12' = C12, C66' = C44, the wave polarised along Z (C11 -
+    # C12)/2 faster than the sagittal shear wave, the sagittal plane a mirror plane
+    ("niobium", "y", (246.5, 133.3, 28.7)),
+])
+def test_rayleigh_speed_of_turned_cubic_crystals_solves_the_published_secular_equation(
+        crystal, axis, constants):
+    """Cubic crystals turned out of their axes so that the sagittal plane is a mirror plane:
+    c_R^2 C66' is the root of the orthorhombic secular equation in (0, C66') (the only one
+    there: sign changes on a fine grid), by brentq."""
+    C11, C12, C44 = constants
+    m = Anisotropic(_cubic(C11, C12, C44)).rotated(Rotation.from_euler(axis, 45.0,
+                                                                         degrees=True))
+    if axis == "z":
+        sagittal = ((C11 + C12) / 2 + C44, (C11 + C12) / 2 + C44, (C11 + C12) / 2 - C44,
+                    (C11 - C12) / 2)
+    else:
+        sagittal = ((C11 + C12) / 2 + C44, C11, C12, C44)
+    C11s, C22s, C12s, C66s = sagittal
+    # the turned stiffness in the sagittal plane is the one the secular equation takes
+    np.testing.assert_allclose(m.C[[0, 1, 0, 5], [0, 1, 1, 5]], sagittal, rtol=1e-13)
+    X = np.linspace(0.0, C66s, 20001)
+    assert np.count_nonzero(np.diff(np.sign(orthorhombic_secular(X, *sagittal)))) == 1
+    X_R = brentq(orthorhombic_secular, 0.0, C66s, args=sagittal, xtol=1e-14 * C66s,
+                 rtol=1e-15)
+    c_R = m.rayleigh_speed()
+    assert c_R < m.limiting_speed()
+    assert c_R ** 2 * m.C[5, 5] == pytest.approx(X_R, rel=1e-12)
 
 
 def test_triclinic_rayleigh_speed_independent(triclinic):
