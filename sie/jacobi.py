@@ -18,18 +18,19 @@ __all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norm
 
 
 @jit()
-def _vandermonde(n, a, b, x):
-    """V[i, k] = P_k^{(a,b)}(x_i), k < n, by the recurrence DLMF 18.9.1-2:
+def _vandermonde_into(a, b, x, V):
+    """V[i, k] = P_k^{(a,b)}(x_i), k < V.shape[1], by the recurrence DLMF 18.9.1-2:
     P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1},  s = 2k + a + b,
     A_k = (s+1)(s+2)s/d,  B_k = (s+1)(a^2-b^2)/d,  C_k = 2(k+a)(k+b)(s+2)/d,
     d = 2(k+1)(k+a+b+1)s.
 
-    The only compiled kernel of this module: series and projections are BLAS
-    products with blocks of V (see ``_BLOCK``), which keeps the number of kernels a
-    first call must compile small (each costs ~0.2 s).
+    Filled in place, so that one body serves real exponents (V float) and complex ones
+    (V complex: the exponents of a system's modes, :mod:`sie.systems`).  The only compiled
+    kernel of this module: series and projections are BLAS products with blocks of V (see
+    ``_BLOCK``), which keeps the number of kernels a first call must compile small (each
+    costs ~0.2 s).
     """
-    m = x.shape[0]
-    V = np.empty((m, n))
+    m, n = V.shape
     if n == 0:
         return V
     for i in range(m):
@@ -49,6 +50,23 @@ def _vandermonde(n, a, b, x):
             for i in range(m):
                 V[i, k + 1] = (A * x[i] + B) * V[i, k] - C * V[i, k - 1]
     return V
+
+
+def _parameter(a):
+    """A Jacobi parameter as the kernel takes it: float, or complex when it has an
+    imaginary part."""
+    a = complex(a)
+    return a if a.imag else a.real
+
+
+def _vandermonde(n, a, b, x):
+    """:func:`_vandermonde_into` into a new matrix (complex when a or b is)."""
+    a, b = _parameter(a), _parameter(b)
+    cplx = isinstance(a, complex) or isinstance(b, complex)
+    V = np.empty((x.shape[0], n), dtype=complex if cplx else float)
+    if cplx:
+        a, b = complex(a), complex(b)
+    return _vandermonde_into(a, b, x, V)
 
 
 @jit()
@@ -117,9 +135,10 @@ def jacobi_series(c, a, b, x):
     c : array_like
         Coefficients, in the standard normalisation of P_k^{(a,b)} (as
         ``scipy.special.eval_jacobi``: P_k(1) = (a+1)_k / k!).
-    a, b : float
+    a, b : float or complex
         Jacobi parameters (not checked; the recurrence needs a + b + 2 != 0 and no
-        vanishing denominator, as for a, b > -1).
+        vanishing denominator, as for a, b > -1 or real parts > -1).  Complex parameters
+        or coefficients give a complex result (the modes of :mod:`sie.systems`).
     x : array_like
         Points, any shape.
 
@@ -146,18 +165,20 @@ def jacobi_series(c, a, b, x):
     [-0.125, 1.0]
     """
     x = np.asarray(x, dtype=float)
-    c = _f64(c)
+    cplx = np.iscomplexobj(c) or isinstance(_parameter(a), complex) \
+        or isinstance(_parameter(b), complex)
+    c = np.ascontiguousarray(c, dtype=complex) if cplx else _f64(c)
     xf = _f64(x.ravel())
-    out = np.zeros(xf.size)
+    out = np.zeros(xf.size, dtype=c.dtype)
     if c.size:
         for rows in _blocks(c.size, xf.size):
-            out[rows] = _vandermonde(c.size, float(a), float(b), xf[rows]) @ c
+            out[rows] = _vandermonde(c.size, a, b, xf[rows]) @ c
     return out.reshape(x.shape)
 
 
 def jacobi_vandermonde(n, a, b, x):
-    """Matrix V[i, k] = P_k^{(a,b)}(x_i), k = 0..n-1."""
-    return _vandermonde(int(n), float(a), float(b), _f64(x))
+    """Matrix V[i, k] = P_k^{(a,b)}(x_i), k = 0..n-1 (complex when a or b is)."""
+    return _vandermonde(int(n), a, b, _f64(x))
 
 
 def jacobi_project(v, a, b, x, n):
@@ -168,7 +189,7 @@ def jacobi_project(v, a, b, x, n):
     out = np.zeros(n)
     if n:
         for rows in _blocks(n, x.size):
-            out += v[rows] @ _vandermonde(n, float(a), float(b), x[rows])
+            out += v[rows] @ _vandermonde(n, a, b, x[rows])
     return out
 
 

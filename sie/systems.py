@@ -120,7 +120,7 @@ from .errors import (CallableOutputError, EvaluationPointError, InconsistentEqua
                      check_finite_real, check_order, is_number)
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_norms_cached, jacobi_vandermonde
+from .jacobi import jacobi_norms_cached, jacobi_series, jacobi_vandermonde
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
            "SystemSolution", "N_MAX_SYSTEM"]
@@ -246,6 +246,16 @@ def system_modes(A, B) -> SystemModes:
     if A.shape != B.shape:
         raise InvalidCoefficientError(f"A and B must have the same shape, got {A.shape} and "
                                       f"{B.shape}")
+    return _modes_of(A.shape[0], A.tobytes(), B.tobytes())
+
+
+@functools.lru_cache(maxsize=64)
+def _modes_of(m, a_bytes, b_bytes):
+    """:func:`system_modes` of checked matrices, memoised by their bytes (read-only
+    results): a system solved again for another right-hand side, as a load or a contact
+    end changes, decomposes B^{-1} A once (half of a solve at n = 64)."""
+    A = np.frombuffer(a_bytes).reshape(m, m)
+    B = np.frombuffer(b_bytes).reshape(m, m)
     cb = np.linalg.cond(B)
     if not cb < _COND_B_MAX:
         raise InvalidCoefficientError(
@@ -429,54 +439,6 @@ def mode_exponents(lam, left: str, right: str) -> ModeExponents:
 # --------------------------------------------------------------------------
 # Jacobi polynomials with complex parameters
 # --------------------------------------------------------------------------
-def _jacobi_columns(N, a, b, x):
-    """V[i, k] = P_k^{(a,b)}(x_i), k < N, complex a, b (DLMF 18.9.1-2, as
-    :func:`sie.jacobi.jacobi_vandermonde`)."""
-    x = np.asarray(x, dtype=float)
-    V = np.empty((x.size, N), dtype=complex)
-    if N == 0:
-        return V
-    V[:, 0] = 1.0
-    if N > 1:
-        ap1 = a + 1.0
-        abp2 = ap1 + (b + 1.0)
-        V[:, 1] = ap1 + 0.5 * abp2 * (x - 1.0)
-        for k in range(1, N - 1):
-            s = 2.0 * (k - 1) + abp2
-            d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
-            A = (s + 1.0) * (s + 2.0) * s / d
-            Bk = (s + 1.0) * (a * a - b * b) / d
-            C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
-            V[:, k + 1] = (A * x + Bk) * V[:, k] - C * V[:, k - 1]
-    return V
-
-
-def _series(c, a, b, x):
-    """sum_k c_k P_k^{(a,b)}(x) by the forward recurrence (complex a, b, c)."""
-    x = np.asarray(x, dtype=float)
-    out = np.zeros(x.shape, dtype=complex)
-    n = len(c)
-    if n == 0:
-        return out
-    p0 = np.ones(x.shape, dtype=complex)
-    out += c[0] * p0
-    if n == 1:
-        return out
-    ap1 = a + 1.0
-    abp2 = ap1 + (b + 1.0)
-    p1 = ap1 + 0.5 * abp2 * (x - 1.0)
-    out += c[1] * p1
-    for k in range(1, n - 1):
-        s = 2.0 * (k - 1) + abp2
-        d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
-        A = (s + 1.0) * (s + 2.0) * s / d
-        Bk = (s + 1.0) * (a * a - b * b) / d
-        C = 2.0 * (k + a) * (k + b) * (s + 2.0) / d
-        p0, p1 = p1, (A * x + Bk) * p1 - C * p0
-        out += c[k + 1] * p1
-    return out
-
-
 @functools.lru_cache(maxsize=64)
 def _projector(N, alpha, beta):
     """The projection of a mode with exponents (alpha, beta) onto P_j^{(-alpha,-beta)},
@@ -487,9 +449,11 @@ def _projector(N, alpha, beta):
     if alpha.imag == 0.0 and beta.imag == 0.0:
         # Gauss-Jacobi: d_j = sum_i w_i g_i P_j(x_i) / h_j
         V = jacobi_vandermonde(N, ar, br, x)
-        Wt = (V * w[:, None]).T / jacobi_norms_cached(N, ar, br)[:, None]
-        return x, lambda g: Wt @ g
-    V = _jacobi_columns(N, -alpha, -beta, x)
+        Wt = np.ascontiguousarray((V * w[:, None]).T / jacobi_norms_cached(N, ar, br)[:, None])
+        # real and imaginary parts apart: BLAS products (a real matrix times a complex
+        # vector is not one)
+        return x, lambda g: Wt @ g.real + 1j * (Wt @ g.imag)
+    V = jacobi_vandermonde(N, -alpha, -beta, x)
     sw = np.sqrt(w)
     S = sw[:, None] * V
     col = np.linalg.norm(S, axis=0)
@@ -838,11 +802,11 @@ class SystemSolution:
         s = np.asarray(s, dtype=float)
         u = (s - 0.5 * (c + d)) / (0.5 * (d - c))
         u = np.where(s == d, 1.0, np.where(s == c, -1.0, u))
-        return np.array([_series(ck, e.alpha, e.beta, u)
+        return np.array([jacobi_series(ck, e.alpha, e.beta, u)
                          for e, ck in zip(self.exponents, self.coefficients)])
 
     def _modal(self, u):
-        return np.array([_weight(e, u) * _series(ck, e.alpha, e.beta, u)
+        return np.array([_weight(e, u) * jacobi_series(ck, e.alpha, e.beta, u)
                          for e, ck in zip(self.exponents, self.coefficients)])
 
     def phi(self, s):
@@ -869,8 +833,8 @@ class SystemSolution:
                 img = fac * ck
             else:
                 img = np.concatenate([[0.0], fac * ck])
-            out.append(-e.lam * _weight(e, u) * _series(ck, e.alpha, e.beta, u)
-                       + _series(img, -e.alpha, -e.beta, u))
+            out.append(-e.lam * _weight(e, u) * jacobi_series(ck, e.alpha, e.beta, u)
+                       + jacobi_series(img, -e.alpha, -e.beta, u))
         return (self.modes.vectors @ np.array(out)).real.reshape((-1,) + np.shape(s))
 
     def integral(self):

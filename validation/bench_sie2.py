@@ -294,6 +294,30 @@ def bench_solves():
     return rows
 
 
+SYSTEM_N = 64
+SYSTEM_RATIO = 4.0      # an m = 2 system on one interval: at most this times the scalar solve
+SYSTEM_CASES = (
+    ("real modes", np.array([[0.3, 0.1], [0.05, -0.2]]), np.array([[1.0, 0.2], [0.0, 1.0]])),
+    ("a conjugate pair (complex exponents)", np.array([[0.0, -0.3], [0.3, 0.0]]), np.eye(2)),
+)
+
+
+def bench_systems():
+    """An m = 2 system on [-1, 1] (sie.solve_system, f = (cos s, sin s)) against the scalar
+    solve of the same n and end choices in the same run (best of SOLVE_REPEAT, warm):
+    one row per kind of modes."""
+    def f2(s):
+        return np.array([np.cos(s), np.sin(s)])
+    kw = dict(n=SYSTEM_N, left=LEFT, right=RIGHT)
+    t_scalar, _ = time_stats(lambda: sie.solve(F_COS, a=A, b=B, **kw), SOLVE_REPEAT)
+    rows = []
+    for label, Am, Bm in SYSTEM_CASES:
+        t, _ = time_stats(lambda: sie.solve_system(f2, Am, Bm, **kw), SOLVE_REPEAT)
+        rows.append({"label": label, "t": t, "t_scalar": t_scalar})
+    print("  systems: done", flush=True)
+    return rows
+
+
 # --------------------------------------------------------------------------
 # 2. Cauchy transform at 1e6 points, and the Gauss-quadrature peer
 # --------------------------------------------------------------------------
@@ -616,7 +640,7 @@ def fmt_us(t_pt):
     return f"{t_pt * 1e6:.3g} us"
 
 
-def report(solves, cres, multi, mchk, cwp, t_total, lap):
+def report(solves, systems, cres, multi, mchk, cwp, t_total, lap):
     L = ["# make bench: sie 2 (several intervals, Cauchy transforms at 10^6 points)", ""]
     L.append(f"Machine: {os.cpu_count()} cores, Python {sys.version.split()[0]}, numpy "
              f"{np.__version__}, numba {__import__('numba').__version__}, scipy "
@@ -633,6 +657,11 @@ def report(solves, cres, multi, mchk, cwp, t_total, lap):
     L.append(f"| two intervals, n = 32 each, warm solve (ratio to one interval n = 32 in this run: "
              f"{two['t'] / one['t']:.1f}x) | {fmt_t(two['t'])} | < {fmt_t(T_TWO_S)} | "
              f"{verdict(two['t'] < T_TWO_S)} |")
+    for row in systems:
+        ratio = row["t"] / row["t_scalar"]
+        L.append(f"| an m = 2 system, {row['label']}, n = {SYSTEM_N} (scalar solve "
+                 f"{fmt_t(row['t_scalar'])} in this run) | {fmt_t(row['t'])} ({ratio:.1f}x) | "
+                 f"<= {SYSTEM_RATIO:g}x the scalar | {verdict(ratio <= SYSTEM_RATIO)} |")
     for name, s in cres["sets"].items():
         L.append(f"| sie.jacobi_cauchy, n = {N_SERIES}, 10^6 points, {POINT_SET_TEXT[name]} "
                  f"({fmt_us(s['t_ours'] / N_POINTS)} per point) | {fmt_t(s['t_ours'])} | "
@@ -799,6 +828,7 @@ def main():
     lap = {}
     t0 = time.perf_counter()
     solves = bench_solves()
+    systems = bench_systems()
     lap["solves"], t0 = time.perf_counter() - t0, time.perf_counter()
     cres = bench_cauchy(rng)
     lap["cauchy + peer"], t0 = time.perf_counter() - t0, time.perf_counter()
@@ -807,7 +837,7 @@ def main():
     cwp = bench_complex_wp(rng, cres)
     lap["complex panel"] = time.perf_counter() - t0
     write_figure(multi, cwp, OUT / "work_precision_sie2.png")
-    text = report(solves, cres, multi, mchk, cwp, time.perf_counter() - t_start, lap)
+    text = report(solves, systems, cres, multi, mchk, cwp, time.perf_counter() - t_start, lap)
     (OUT / "bench_sie2.md").write_text(text + "\n")
     print(text)
 
