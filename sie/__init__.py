@@ -38,6 +38,7 @@ from .solver import N_MAX as _N_MAX
 from .solver import Functionals
 from .block import Block
 from .equation import Equation, solve
+from .fixed_ends import FixedEndSolution, end_exponent
 from .special import jacobi_moment
 from .systems import (ModeExponents, SystemModes, SystemSolution, mode_exponents,
                       solve_system, system_modes)
@@ -56,7 +57,7 @@ __all__ = [
     "gauss_jacobi", "sie_exponents", "Exponents", "jacobi_cauchy", "N_MAX",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "solve_system", "system_modes", "mode_exponents", "SystemSolution", "SystemModes",
-    "ModeExponents",
+    "ModeExponents", "end_exponent", "FixedEndSolution",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",
     "InvalidBreakpointError", "EvaluationPointError", "InvalidIntervalError",

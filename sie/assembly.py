@@ -60,28 +60,34 @@ def kernel_images(x, uj, kernel):
 _PROBE = (1e-3, 1e-6)
 
 
-def probe_kernel(unknowns):
+def probe_kernel(unknowns, explicit=()):
     """Refuse a kernel that grows without bound toward a pair of ends (s, t) (a fixed
     singularity: the generalised Cauchy kernels of edge cracks and of cracks ending at an
     interface; Erdogan, Gupta & Cook 1973; Kaya & Erdogan 1987).  It changes the exponent at
     that end, so the Jacobi basis of the end choices cannot represent the solution and the
     collocation converges to a wrong answer.  Sampled at distances 1e-3 and 1e-6 (relative
-    to the half-widths) inside every pair of ends, for each row's kernel."""
+    to the half-widths) inside every pair of ends, for each row's kernel.  ``explicit``: the
+    (interval, end) pairs (end -1 or 1) whose exponent the caller gave (:mod:`sie.fixed_ends`),
+    where the kernel may be singular: a corner of two such ends is not probed."""
     for kernel in {id(u.kernel): u.kernel for u in unknowns if u.kernel is not None}.values():
         rows = [u for u in unknowns if u.kernel is kernel]
-        _probe(kernel, rows, unknowns)
+        _probe(kernel, rows, unknowns, frozenset(explicit))
 
 
-def _probe(kernel, rows, unknowns):
+def _probe(kernel, rows, unknowns, explicit=frozenset()):
     pts_s, pts_t, tags = [], [], []
     for ui in rows:
         for uj in unknowns:
             for es in (-1.0, 1.0):
                 for et in (-1.0, 1.0):
+                    if (ui.interval, es) in explicit and (uj.interval, et) in explicit:
+                        continue
                     for d in _PROBE:
                         pts_s.append(ui.interval.real(es * (1.0 - d)))
                         pts_t.append(uj.interval.real(et * (1.0 - 1.5 * d)))
                     tags.append((ui.interval, es, uj.interval, et))
+    if not tags:
+        return
     S, T = np.array(pts_s), np.array(pts_t)
     try:
         k = np.abs(call_checked(kernel, "kernel", (S, T), S.shape)).reshape(-1, 2)
@@ -95,13 +101,15 @@ def _probe(kernel, rows, unknowns):
         ivs, es, ivt, et = tags[i]
         s_end = ivs.d if es > 0 else ivs.c
         t_end = ivt.d if et > 0 else ivt.c
+        side = "right" if es > 0 else "left"
         raise KernelSingularityError(
             f"the kernel grows without bound toward (s, t) = ({s_end!r}, {t_end!r}) "
             f"(|k| = {k[i, 0]:.3g} at distance 1e-3, {k[i, 1]:.3g} at 1e-6): a fixed "
             "singularity at an end, as in the generalised Cauchy kernel of an edge crack, "
-            "changes the end exponent away from the ones the end choices give; this solver "
-            "needs a kernel bounded on L x L (treat the singular part analytically, e.g. "
-            "Kaya & Erdogan 1987, or map the problem so that the kernel is bounded)")
+            "sets the end exponent itself, not the end choice \"bounded\" / \"singular\"; "
+            f"give that end's exponent, {side}=<float> in (-1, 1) (the root of the kernel's "
+            "characteristic function, sie.end_exponent; for the edge crack's kernel at the "
+            "free surface it is 0), or map the problem so that the kernel is bounded")
 
 
 @dataclass(frozen=True)

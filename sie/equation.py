@@ -30,6 +30,7 @@ from .errors import (CallableOutputError, InvalidCoefficientError, InvalidInterv
                      PerIntervalArgumentError, SideConditionError, UnsupportedEquationError,
                      real_array)
 from .exponents import check_coefficients, check_end, exponents_of
+from .fixed_ends import explicit_exponents, is_explicit, solve_fixed
 from .block import Block
 from .intervals import Interval, check_intervals, per_interval
 from .batch import CaseRules
@@ -67,9 +68,10 @@ class Equation:
         The coefficients, shared by all intervals or one per interval (b != 0 and abs(b/a)
         resolvable in double precision: see :func:`sie.sie_exponents`); with a case axis,
         one per case (shape (B,)) or shared.
-    left, right : {"bounded", "singular"} or a sequence of them
+    left, right : {"bounded", "singular"}, float, or a sequence of them
         psi's behaviour at the left and the right end of each interval (shared by the
-        cases of a case axis).
+        cases of a case axis), or an explicit exponent in (-1, 1) (one interval, no case
+        axis: the end of a kernel with a fixed singularity there; :mod:`sie.fixed_ends`).
     intervals : array_like, optional
         L as J disjoint ascending (c, d) pairs, shape (J, 2); default the single interval
         [-1, 1].  With it, the per-interval attributes of a :class:`sie.Solution` are
@@ -154,10 +156,16 @@ class Equation:
         J = len(ivs)
         A = [check_coefficients(ai, bi) for ai, bi in
              zip(per_interval("a", a, J), per_interval("b", b, J))]
-        lefts = [check_end("left", v) for v in per_interval("left", left, J)]
-        rights = [check_end("right", v) for v in per_interval("right", right, J)]
+        lefts = [check_end("left", v, True) for v in per_interval("left", left, J)]
+        rights = [check_end("right", v, True) for v in per_interval("right", right, J)]
         kernels = _kernels(kernel, J)
-        blocks = tuple(Block(iv_j, aj, bj, l, r, exponents_of(aj, bj, l, r), k)
+        explicit = any(is_explicit(v) for v in lefts + rights)
+        if explicit and J != 1:
+            raise UnsupportedEquationError(
+                f"an explicit end exponent (left=/right= a float) is available on one "
+                f"interval; got {J} intervals")
+        exps = explicit_exponents if explicit else exponents_of
+        blocks = tuple(Block(iv_j, aj, bj, l, r, exps(aj, bj, l, r), k)
                        for iv_j, (aj, bj), l, r, k in zip(ivs, A, lefts, rights, kernels))
         self._set(blocks, intervals is not None)
 
@@ -188,6 +196,10 @@ class Equation:
             raise InvalidCoefficientError("a case axis must hold at least one equation, got none")
         _check_case_intervals(iv)
         A, Bv = _case_coefficients(a, b, B)
+        if is_explicit(left) or is_explicit(right):
+            raise UnsupportedEquationError(
+                "a case axis takes the end choices \"bounded\" / \"singular\"; an explicit end "
+                "exponent is available for one equation (solve the cases one by one)")
         left, right = check_end("left", _one(left, "left")), check_end("right", _one(right, "right"))
         exps = tuple(exponents_of(ai, bi, left, right) for ai, bi in zip(A.tolist(), Bv.tolist()))
         A.flags.writeable = Bv.flags.writeable = False
@@ -281,6 +293,11 @@ class Equation:
         return out
 
     @property
+    def _explicit(self) -> bool:
+        """Whether an end has an explicit exponent (:mod:`sie.fixed_ends`)."""
+        return any(is_explicit(v) for ends in self._ends for v in ends)
+
+    @property
     def exponents(self) -> tuple:
         """The Exponents of each block (of each case, with a case axis)."""
         return self._exps
@@ -330,6 +347,9 @@ class Equation:
                 raise UnsupportedEquationError("a case axis takes no breaks (solve an equation "
                                                "with breaks on its own)")
             return self._rules(n).solve(f, self.intervals[:, 0, :], _case_total(total, self))
+        if self._explicit:
+            return solve_fixed(self.blocks[0], f, n, total, breaks, check_residual,
+                               self._multi, stacklevel)
         return solve_blocks(self.blocks, f, n, total, breaks, check_residual, self._multi,
                             stacklevel)
 
@@ -377,6 +397,10 @@ class Equation:
             if np.size(breaks):
                 raise UnsupportedEquationError("a case axis takes no breaks")
             return self._rules(n).functionals(f, self.intervals[:, 0, :])
+        if self._explicit:
+            raise UnsupportedEquationError("functionals need the end choices \"bounded\" / "
+                                           "\"singular\" (the dominant equation's Gauss sum); "
+                                           "with an explicit end exponent use solve()")
         if len(self.blocks) != 1 or self.blocks[0].kernel is not None:
             raise UnsupportedEquationError(
                 f"functionals need one interval without a kernel (the dominant equation's "
@@ -523,8 +547,12 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     n : int or sequence of int
         Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
         ``N_MAX``.
-    left, right : {"bounded", "singular"} or a sequence of them
-        Behaviour of psi at the left and right end of each interval.
+    left, right : {"bounded", "singular"}, float, or a sequence of them
+        Behaviour of psi at the left and right end of each interval, or an explicit
+        exponent in (-1, 1) for an end where the kernel has a fixed singularity (one
+        interval; the general collocation of :mod:`sie.fixed_ends`, which counts an
+        explicit exponent below 0 as singular for the index, and returns a
+        :class:`sie.fixed_ends.FixedEndSolution`; :func:`sie.end_exponent`).
     kernel : callable or sequence of callables, optional
         Kernel k(s, t), vectorised over two arrays of equal shape, bounded on L x L (one
         per interval: the kernel of the equation collocated there).
@@ -553,7 +581,7 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     InvalidCoefficientError
         a or b not finite, or b = 0.
     InvalidEndConditionError
-        ``left`` or ``right`` not "bounded" or "singular".
+        ``left`` or ``right`` not "bounded", "singular" or a real number in (-1, 1).
     InvalidOrderError
         n not an integer, n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``.
     SideConditionError
@@ -565,7 +593,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     PerIntervalArgumentError
         A per-interval argument whose length does not match ``intervals``.
     KernelSingularityError
-        ``kernel`` unbounded next to an end.
+        ``kernel`` unbounded next to an end whose exponent was not given (the message
+        names the end: give it, ``left=<float>`` / ``right=<float>``).
     CallableOutputError
         ``f`` or ``kernel`` not callable, not vectorised, complex or not finite.
 

@@ -215,12 +215,17 @@ class PerIntervalArgumentError(SIEInputError):
 
 
 class KernelSingularityError(SIEInputError):
-    """The kernel k(s, t) is unbounded at an end (a fixed singularity, e.g. the edge crack's
-    generalised Cauchy kernel): it changes the end exponent, which the Jacobi basis fixes.
+    """The kernel k(s, t) is unbounded at an end whose exponent was not given (a fixed
+    singularity, e.g. the edge crack's generalised Cauchy kernel): it sets the end exponent
+    itself, which the end choices "bounded" / "singular" take from a and b instead.
 
     :func:`sie.solve` samples the kernel at distances 1e-3 and 1e-6 (relative to the
     half-widths) inside every pair of interval ends and raises when it grows more than
-    100-fold there, or cannot be evaluated there.
+    100-fold there, or cannot be evaluated there.  The message names the end: give its
+    exponent explicitly, ``left=<float>`` or ``right=<float>`` in (-1, 1)
+    (:mod:`sie.fixed_ends`; the root of the kernel's characteristic function,
+    :func:`sie.end_exponent`; 0 for the edge crack's kernel at the free surface), and the
+    corners of such ends are not probed.
 
     References
     ----------

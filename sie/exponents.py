@@ -142,11 +142,17 @@ def check_coefficients(a, b) -> tuple[float, float]:
     return a, b
 
 
-def check_end(name: str, v) -> str:
-    """``v`` if it is "bounded" or "singular", else InvalidEndConditionError."""
-    if v not in END_CHOICES:
-        raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
-    return v
+def check_end(name: str, v, explicit: bool = False):
+    """``v`` if it is "bounded" or "singular"; with ``explicit``, also a real number in
+    (-1, 1) (an explicit end exponent, returned as a float: :mod:`sie.fixed_ends`); else
+    InvalidEndConditionError."""
+    if isinstance(v, str) and v in END_CHOICES:
+        return v
+    if explicit and not isinstance(v, (str, bytes)):
+        from .fixed_ends import check_explicit_exponent
+        return check_explicit_exponent(name, v)
+    # text: a misspelt end choice (an exponent is given as a number, not as text)
+    raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')
 
 
 def exponents_of(a: float, b: float, left: str, right: str) -> Exponents:

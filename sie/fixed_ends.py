@@ -1,0 +1,460 @@
+"""Ends with an explicit exponent: kernels with a fixed singularity at an end.
+
+    a psi(s) + (b/pi) PV int_c^d psi(t)/(t - s) dt + int_c^d k(s, t) psi(t) dt = f(s)
+
+on one interval, where k(s, t) grows without bound toward (s, t) = (end, end) (a
+generalised Cauchy kernel: the edge crack's -1/(t+s) + 6s/(t+s)^2 - 4s^2/(t+s)^3).  Such a
+kernel sets the exponent of psi at that end itself, so the end choices "bounded" /
+"singular" (which take it from cot(pi alpha0) = -a/b) do not apply there; the caller gives
+it (``left=0.0``), e.g. as the root of the kernel's Mellin symbol (:func:`end_exponent`).
+
+With an explicit exponent alpha + beta is in general not an integer and the dominant
+operator no longer maps w P_k^{(alpha,beta)} onto a Jacobi polynomial, so the equation is
+collocated in general form: psi = w phi, w = (1-u)^alpha (1+u)^beta, phi =
+sum_{k<N} c_k P_k^{(alpha,beta)}, and at each collocation point x
+
+    a w P_k (x) + b H[w P_k](x) + h int k(x, t(v)) w(v) P_k(v) dv,
+
+with (Erdogan, Gupta & Cook 1973, eqs. (7.38)-(7.40) for the splitting)
+
+    H[w P_k](x) = (1/pi) int w(t) (P_k(t) - P_k(x))/(t - x) dt + P_k(x) H[w](x),
+
+the first term exact by Gauss-Jacobi (its integrand is a polynomial of degree k - 1 times
+w; the divided differences by their own three-term recurrence, without cancellation) and
+H[w] in closed form (:func:`weight_hilbert`).  The kernel term is nearly singular for x next
+to an explicit end: it is integrated by a rule graded geometrically toward that end on the
+scale of x's distance to it (:func:`graded_weight_rule`).
+
+The index rule (Muskhelishvili 1953, sec. 79, for the count of conditions): an explicit
+exponent below 0 counts as singular, one at or above 0 as bounded; kappa = (number of
+singular ends) - 1.  kappa = 0: N collocation points (unique solution); kappa = 1: N - 1
+points and the side condition int psi = total; kappa = -1: N + 1 points solved in least
+squares, with the root-mean-square residual reported as ``consistency``.  The points are
+the roots of P_{N-kappa}^{(-alpha,-beta)}, the classical choice when alpha + beta is an
+integer (Erdogan, Gupta & Cook 1973; Krenk 1975).
+
+References
+----------
+F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+Noordhoff (1973), ch. 7.  M. C. Kaya and F. Erdogan, "On the solution of integral equations
+with strongly singular kernels", Quart. Appl. Math. 45 (1987) 105.  W. T. Koiter, "Discussion
+of 'Rectangular tensile sheet with symmetric edge cracks'", J. Appl. Mech. 32 (1965) 237.
+N. I. Muskhelishvili, Singular Integral Equations (1953).
+"""
+from __future__ import annotations
+
+import math
+import numbers
+import warnings
+from dataclasses import dataclass
+from types import SimpleNamespace
+
+import numpy as np
+from scipy.optimize import brentq
+from scipy.special import gamma, hyp2f1, rgamma
+
+from .assembly import probe_kernel
+from .errors import (InconsistentEquationWarning, InvalidEndConditionError, ResidualWarning,
+                     SideConditionError, UnsupportedEquationError, call_checked,
+                     check_finite_real, check_order)
+from .exponents import Exponents
+from .gaussjacobi import gauss_jacobi_cached
+from .jacobi import jacobi_vandermonde
+from .solution import IntervalSolution, Solution
+from .special import jacobi_moment_shifted
+
+__all__ = ["end_exponent", "is_explicit", "check_explicit_exponent", "explicit_exponents",
+           "weight_hilbert", "hilbert_images", "graded_weight_rule", "solve_fixed",
+           "FixedEndSolution"]
+
+_RATIO = 4.0            # growth of the graded pieces away from an explicit end
+_Q_MIN = 24             # Gauss nodes per piece of the graded rule, at least
+_N_MAX = 400            # unknowns of the general collocation (dense, O(N^2) kernel sums)
+_CHECKS = np.cos(np.pi * (np.arange(7) + 0.5) / 7) * 0.999
+_RESIDUAL_TOL = 1e-6    # as sie.solver.RESIDUAL_TOL
+_CONSISTENCY_TOL = 1e-8  # as sie.solver.CONSISTENCY_TOL
+
+
+# --------------------------------------------------------------------------
+# the end conditions
+# --------------------------------------------------------------------------
+def is_explicit(v) -> bool:
+    """Whether an end condition is an explicit exponent (a real number, not text or a
+    bool) rather than "bounded" / "singular"."""
+    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+
+
+def check_explicit_exponent(name: str, v) -> float:
+    """``v`` as a float if it is a real number in (-1, 1), else InvalidEndConditionError."""
+    if not is_explicit(v):
+        raise InvalidEndConditionError(
+            f'{name} must be "bounded", "singular" or an exponent in (-1, 1) (a float), '
+            f"got {v!r}")
+    e = float(v)
+    if not (-1.0 < e < 1.0):
+        raise InvalidEndConditionError(
+            f"{name} = {e!r}: an explicit end exponent must lie in (-1, 1) (psi integrable, "
+            "not vanishing to first order)")
+    return e
+
+
+def index_of(left, right, alpha: float, beta: float) -> int:
+    """kappa = (number of singular-like ends) - 1: an explicit exponent below 0 counts as
+    singular, one at or above 0 as bounded; a named end counts as named."""
+    def singular(choice, e):
+        return e < 0.0 if is_explicit(choice) else choice == "singular"
+    return int(singular(left, beta)) + int(singular(right, alpha)) - 1
+
+
+def explicit_exponents(a: float, b: float, left, right) -> Exponents:
+    """The :class:`sie.Exponents` of an interval with at least one explicit end: the
+    explicit exponent(s) as given, a named end's from cot(pi alpha0) = -a/b as
+    :func:`sie.sie_exponents` forms it, kappa by :func:`index_of`."""
+    from .exponents import exponents_of
+    named = exponents_of(a, b, "bounded" if is_explicit(left) else left,
+                         "bounded" if is_explicit(right) else right)
+    alpha = float(right) if is_explicit(right) else named.alpha
+    beta = float(left) if is_explicit(left) else named.beta
+    return Exponents(alpha, beta, index_of(left, right, alpha, beta), named.alpha0,
+                     named.cot, math.sin(math.pi * alpha), 1.0 + alpha, 1.0 + beta,
+                     1.0 - alpha, 1.0 - beta)
+
+
+# --------------------------------------------------------------------------
+# the Mellin helper
+# --------------------------------------------------------------------------
+def end_exponent(symbol, bracket=(-0.99, 0.99), *, xtol=1e-15):
+    """The end exponent gamma in (-1, 1) that a fixed singularity dictates: the root of the
+    kernel's characteristic function (its Mellin symbol) in ``bracket``.
+
+    Near an end where k(s, t) is homogeneous of degree -1 in the distances to it, psi ~
+    t^gamma is a local solution of the homogeneous equation when the Mellin symbol of the
+    operator vanishes at gamma (Erdogan, Gupta & Cook 1973, sec. 7.3): the user writes it
+    down, this finds its root.
+
+    Parameters
+    ----------
+    symbol : callable
+        The characteristic function D(gamma), real for real gamma, continuous on the
+        bracket, with a sign change there.
+    bracket : (float, float)
+        lo < hi inside (-1, 1).
+    xtol : float
+        Absolute tolerance of the root (Brent's method).
+
+    Returns
+    -------
+    float
+        The root, in (-1, 1): pass it as ``left=`` / ``right=`` to :func:`sie.solve`.
+
+    Raises
+    ------
+    InvalidEndConditionError
+        A bracket outside (-1, 1), no sign change on it, or a non-finite symbol value.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook (1973), sec. 7.3 (the characteristic equation of
+    generalised Cauchy kernels); M. C. Kaya and F. Erdogan, Quart. Appl. Math. 45 (1987) 105.
+
+    Examples
+    --------
+    The edge crack normal to a free surface, k(x, t) = -1/(t+x) + 6x/(t+x)^2 -
+    4x^2/(t+x)^3 (distances from the surface): t^gamma is mapped to x^gamma times
+    D(gamma) / sin(pi gamma), D(gamma) = 1 - cos(pi gamma) + 4 gamma + 2 gamma^2, whose root
+    in (-1, 1) is 0, the exponent at the crack's mouth:
+
+    >>> import math, sie
+    >>> D = lambda g: 1.0 - math.cos(math.pi * g) + 4.0 * g + 2.0 * g * g
+    >>> abs(sie.end_exponent(D, (-0.5, 0.5))) < 1e-14
+    True
+    """
+    try:
+        lo, hi = (float(v) for v in bracket)
+    except (TypeError, ValueError):
+        raise InvalidEndConditionError(f"bracket must be two floats (lo, hi), got "
+                                       f"{bracket!r}") from None
+    if not (-1.0 < lo < hi < 1.0):
+        raise InvalidEndConditionError(f"bracket must satisfy -1 < lo < hi < 1, got "
+                                       f"{bracket!r}")
+    flo, fhi = float(symbol(lo)), float(symbol(hi))
+    if not (math.isfinite(flo) and math.isfinite(fhi)):
+        raise InvalidEndConditionError(f"the symbol is not finite on the bracket: "
+                                       f"D({lo}) = {flo}, D({hi}) = {fhi}")
+    if flo == 0.0:
+        return lo
+    if fhi == 0.0:
+        return hi
+    if (flo > 0) == (fhi > 0):
+        raise InvalidEndConditionError(
+            f"the symbol has no sign change on [{lo}, {hi}] (D = {flo:.3g}, {fhi:.3g}): give a "
+            "bracket around the root")
+    return float(brentq(lambda g: float(symbol(g)), lo, hi, xtol=xtol, rtol=4.0 * np.finfo(float).eps))
+
+
+# --------------------------------------------------------------------------
+# the finite Hilbert transform of the weight and of the basis
+# --------------------------------------------------------------------------
+def _dist_to_integer(e):
+    return abs(e - round(e))
+
+
+def weight_hilbert(x, alpha: float, beta: float):
+    """H[w](x) = (1/pi) PV int_{-1}^{1} w(t)/(t - x) dt, w = (1-t)^alpha (1+t)^beta, for
+    x in (-1, 1) and any alpha, beta in (-1, 1).
+
+    With alpha not an integer (Erdogan, Gupta & Cook 1973, eq. (7.29); Gradshteyn & Ryzhik
+    3.228, checked against mpmath's principal value in the tests):
+
+        H[w](x) = cot(pi alpha) w(x) - 2^{alpha+beta} Gamma(alpha) Gamma(beta+1)
+                  / (pi Gamma(alpha+beta+1)) 2F1(1, -alpha-beta; 1-alpha; (1-x)/2),
+
+    and with the ends exchanged (x -> -x, H -> -H) when beta is the farther from an
+    integer (alpha = 0 is such a case: the cotangent and Gamma(alpha) are infinite).  With
+    alpha = beta = 0, w = 1: H[1](x) = (1/pi) log((1-x)/(1+x)).
+    """
+    x = np.asarray(x, dtype=float)
+    if alpha == 0.0 and beta == 0.0:
+        return np.log((1.0 - x) / (1.0 + x)) / math.pi
+    if _dist_to_integer(alpha) >= _dist_to_integer(beta):
+        return _weight_hilbert_right(1.0 - x, 1.0 + x, alpha, beta)
+    return -_weight_hilbert_right(1.0 + x, 1.0 - x, beta, alpha)
+
+
+def _weight_hilbert_right(one_minus, one_plus, alpha, beta):
+    """The closed form of :func:`weight_hilbert`, alpha not an integer, from the distances
+    1 - x and 1 + x."""
+    w = one_minus ** alpha * one_plus ** beta
+    const = 2.0 ** (alpha + beta) * gamma(alpha) * gamma(beta + 1.0) * rgamma(
+        alpha + beta + 1.0) / math.pi
+    return w / math.tan(math.pi * alpha) - const * hyp2f1(1.0, -alpha - beta, 1.0 - alpha,
+                                                          0.5 * one_minus)
+
+
+def _divided_sums(n, alpha, beta, x, t, omega):
+    """S[i, k] = sum_j omega_j (P_k(t_j) - P_k(x_i))/(t_j - x_i), P_k = P_k^{(alpha,beta)},
+    k < n, by the recurrence of the divided differences Q_k = (P_k(t) - P_k(x))/(t - x):
+
+        Q_{k+1} = (A_k t + B_k) Q_k + A_k P_k(x) - C_k Q_{k-1},   Q_0 = 0,
+
+    from P_{k+1} = (A_k t + B_k) P_k - C_k P_{k-1} (DLMF 18.9.1-2): no difference of close
+    numbers where t_j is next to x_i."""
+    P = jacobi_vandermonde(n, alpha, beta, x)          # (m, n)
+    S = np.zeros((x.size, n))
+    if n < 2:
+        return S
+    T = t[None, :]
+    abp2 = alpha + beta + 2.0
+    q_prev = np.zeros((x.size, t.size))
+    q = np.full((x.size, t.size), 0.5 * abp2)          # Q_1: the slope of P_1
+    S[:, 1] = q @ omega
+    for k in range(1, n - 1):
+        s = 2.0 * (k - 1) + abp2
+        d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+        A = (s + 1.0) * (s + 2.0) * s / d
+        B = (s + 1.0) * (alpha * alpha - beta * beta) / d
+        C = 2.0 * (k + alpha) * (k + beta) * (s + 2.0) / d
+        q_prev, q = q, (A * T + B) * q + A * P[:, k:k + 1] - C * q_prev
+        S[:, k + 1] = q @ omega
+    return S
+
+
+def hilbert_images(n, alpha, beta, x):
+    """H[w P_k](x) = (1/pi) PV int w P_k/(t - x) dt, k < n, at x in (-1, 1): matrix
+    (len(x), n); the divided-difference part by the n-point Gauss rule of w (exact), the
+    rest P_k(x) H[w](x)."""
+    x = np.asarray(x, dtype=float)
+    t, omega = gauss_jacobi_cached(max(n, 1), alpha, beta)
+    S = _divided_sums(n, alpha, beta, x, np.asarray(t), np.asarray(omega))
+    P = jacobi_vandermonde(n, alpha, beta, x)
+    return S / math.pi + P * weight_hilbert(x, alpha, beta)[:, None]
+
+
+# --------------------------------------------------------------------------
+# the graded rule for the kernel term
+# --------------------------------------------------------------------------
+def _piece(lo, hi, q, e_near, e_far):
+    """Nodes and weights of int g(v) w(v) dv over the piece of distances [lo, hi] from one
+    end of [-1, 1] (0 <= lo < hi <= 1), w = (near distance)^e_near (far distance)^e_far:
+    Gauss-Jacobi of the near factor on a piece that touches the end (lo = 0), Gauss-Legendre
+    elsewhere, the rest of w evaluated.  Returns the distances of the nodes to that end and
+    to the other, and the weights; the width hi - lo is formed from distances to one end,
+    so that a piece of width 1e-7 keeps its relative precision (from 2 - (2 - d) it would
+    keep 1e-9 of it)."""
+    e = e_near if lo == 0.0 else 0.0
+    y, om = gauss_jacobi_cached(q, 0.0, e)          # the factor (1 + y)^e at the near end
+    h = 0.5 * (hi - lo)
+    near = lo + h * (1.0 + np.asarray(y))
+    far = 2.0 - near
+    wt = np.asarray(om) * h ** (1.0 + e) * far ** e_far
+    if lo != 0.0:
+        wt = wt * near ** e_near
+    return near, far, wt
+
+
+def graded_weight_rule(dist_left, dist_right, q, alpha, beta, graded_left, graded_right):
+    """A rule for int_{-1}^{1} g(v) w(v) dv with g nearly singular at the explicit end(s) on
+    the scale of the point's distance to them (``dist_left`` = 1 + x, ``dist_right`` = 1 - x).
+
+    Each half, [-1, 0] and [0, 1]: toward a graded end at distance d < 1, the piece
+    [end, end -+ d] by Gauss-Jacobi of that end's factor of w and pieces growing by the
+    ratio 4 up to the middle by Gauss-Legendre times w; otherwise one piece, Gauss-Jacobi of
+    the end's factor.  With q nodes per piece a kernel singular at distance d beyond the end
+    of its piece converges like 3^(-2q) (the Bernstein ellipse of the piece).
+
+    Returns
+    -------
+    (ndarray, ndarray, ndarray)
+        1 + v, 1 - v and the weights (w included).
+    """
+    dls, drs, wts = [], [], []
+    for graded, d, left_side in ((graded_left, dist_left, True),
+                                 (graded_right, dist_right, False)):
+        edges = [0.0]                               # distances from this half's end
+        if graded and d < 1.0:
+            e = d
+            while e < 1.0:
+                edges.append(e)
+                e *= _RATIO
+        edges.append(1.0)
+        e_near, e_far = (beta, alpha) if left_side else (alpha, beta)
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            near, far, wt = _piece(lo, hi, q, e_near, e_far)
+            dls.append(near if left_side else far)
+            drs.append(far if left_side else near)
+            wts.append(wt)
+    return np.concatenate(dls), np.concatenate(drs), np.concatenate(wts)
+
+
+def kernel_term(kernel, x_dist, interval, n, alpha, beta, graded_left, graded_right, q):
+    """h int k(x, t(v)) w(v) P_k(v) dv at the points of local distances x_dist = (1 + x,
+    1 - x): matrix (len(x), n), the kernel called once on all nodes."""
+    dl_x, dr_x = x_dist
+    rules = [graded_weight_rule(a, b, q, alpha, beta, graded_left, graded_right)
+             for a, b in zip(dl_x, dr_x)]
+    sizes = np.array([r[0].size for r in rules])
+    dl = np.concatenate([r[0] for r in rules])
+    dr = np.concatenate([r[1] for r in rules])
+    wt = np.concatenate([r[2] for r in rules])
+    c, d, h = interval.c, interval.d, interval.h
+    # real coordinates from the nearer end: next to an end, s - c and t - c keep their
+    # relative precision (the edge crack's kernel is a function of t + s there)
+    t = np.where(dl <= dr, c + h * dl, d - h * dr)
+    s_pts = np.where(dl_x <= dr_x, c + h * dl_x, d - h * dr_x)
+    S = np.repeat(s_pts, sizes)
+    kst = call_checked(kernel, "kernel", (S, t), S.shape)
+    v = np.where(dl <= dr, dl - 1.0, 1.0 - dr)
+    V = jacobi_vandermonde(n, alpha, beta, v) * (kst * wt)[:, None]
+    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+    return h * np.add.reduceat(V, starts, axis=0)
+
+
+# --------------------------------------------------------------------------
+# the solver
+# --------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class FixedEndSolution(Solution):
+    """A :class:`sie.Solution` of an interval with an explicit end exponent: psi, phi,
+    the weight, ``integral``, ``kernel_integral``, ``endpoint_value`` (the series at the
+    end) and ``condition`` as for any solution; psi at an end of exponent 0 is phi there.
+    The Cauchy transform and the log potential raise :class:`UnsupportedEquationError`:
+    their exact Jacobi recurrences (:mod:`sie.cauchy`) start from the transform of a
+    weight with alpha + beta an integer."""
+
+    def __call__(self, s):
+        out = super().__call__(s)
+        s = np.asarray(s, dtype=float)
+        for p in self.pieces:
+            for end, expo, u in ((p.interval.c, p.beta, -1.0), (p.interval.d, p.alpha, 1.0)):
+                at = s == end
+                if expo == 0.0 and np.any(at):
+                    out = np.where(at, p.phi_local(np.array([u]))[0], out)
+        return out
+
+    def _unsupported(self, *args, **kwargs):
+        raise UnsupportedEquationError(
+            "the Cauchy transform and the log potential of a solution with an explicit end "
+            "exponent (alpha + beta not an integer) are not available: the exact Jacobi "
+            "recurrences of sie.cauchy need alpha + beta an integer")
+
+    cauchy = cauchy_limit = log_potential = _unsupported
+
+
+def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=False,
+                stacklevel=2):
+    """Solve one block with an explicit end exponent by the general collocation of the
+    module docstring; a :class:`FixedEndSolution`."""
+    if np.size(breaks):
+        raise UnsupportedEquationError("breaks= is not available with an explicit end "
+                                       "exponent (the general collocation has no remainder)")
+    e, iv = block.exponents, block.interval
+    kappa = e.kappa
+    n = check_order(n, 2 if kappa == 1 else 1, "")
+    if n > _N_MAX:
+        raise UnsupportedEquationError(f"n = {n}: the general collocation of an explicit end "
+                                       f"exponent takes at most {_N_MAX} coefficients")
+    if kappa == 1:
+        if total is None:
+            raise SideConditionError("total (= int psi) is required when both ends are "
+                                     "singular (an explicit exponent below 0 counts as "
+                                     "singular)")
+        total = check_finite_real("total", total, SideConditionError)
+    elif total is not None:
+        raise SideConditionError(f"total must not be given: the index is {kappa} (an "
+                                 "explicit exponent at or above 0 counts as bounded)")
+    alpha, beta = e.alpha, e.beta
+    m = n - kappa
+    xc = np.asarray(gauss_jacobi_cached(m, -alpha, -beta)[0])
+    checks = _CHECKS if check_residual else np.empty(0)
+    x = np.concatenate([xc, checks])
+    dist = (1.0 + x, 1.0 - x)
+    A = block.b * hilbert_images(n, alpha, beta, x)
+    if block.a != 0.0:
+        A += block.a * (((1.0 - x) ** alpha * (1.0 + x) ** beta)[:, None]
+                        * jacobi_vandermonde(n, alpha, beta, x))
+    if block.kernel is not None:
+        # the corners of two explicit ends may be singular; the others must be bounded
+        ends = {(iv, -1.0) for _ in [0] if is_explicit(block.left)} | \
+            {(iv, 1.0) for _ in [0] if is_explicit(block.right)}
+        probe_kernel([SimpleNamespace(interval=iv, kernel=block.kernel)], ends)
+        q = max(_Q_MIN, n // 2 + 16)
+        A += kernel_term(block.kernel, dist, iv, n, alpha, beta,
+                         is_explicit(block.left), is_explicit(block.right), q)
+    s_real = np.where(x <= 0.0, iv.c + iv.h * dist[0], iv.d - iv.h * dist[1])
+    fx = call_checked(f, "f", (s_real,), s_real.shape)
+    Ac, fc = A[:m], fx[:m]
+    consistency = None
+    mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)
+    if kappa == 1:
+        row = np.zeros(n)
+        row[0] = iv.h * mu0
+        scale = float(np.max(np.abs(Ac))) / abs(row[0])
+        c = np.linalg.solve(np.vstack([scale * row, Ac]), np.concatenate([[scale * total], fc]))
+        matrix = np.vstack([scale * row, Ac])
+    elif kappa == 0:
+        c = np.linalg.solve(Ac, fc)
+        matrix = Ac
+    else:
+        c, *_ = np.linalg.lstsq(Ac, fc, rcond=None)
+        consistency = float(np.sqrt(np.mean((Ac @ c - fc) ** 2)))
+        matrix = Ac
+    fscale = max(float(np.max(np.abs(fx))), np.finfo(float).tiny)
+    if consistency is not None and consistency > _CONSISTENCY_TOL * fscale:
+        warnings.warn(
+            f"sie.solve: the collocation with an explicit end exponent is over-determined "
+            f"(index -1) and its least-squares residual is {consistency:.3g} (max|f| = "
+            f"{fscale:.3g}): f violates the solvability condition, or n is too small",
+            InconsistentEquationWarning, stacklevel=stacklevel)
+    if checks.size:
+        lhs = A[m:] @ c
+        r = float(np.max(np.abs(lhs - fx[m:]))) / max(fscale, float(np.max(np.abs(lhs))))
+        if r > _RESIDUAL_TOL:
+            warnings.warn(
+                f"sie.solve: the solution leaves a residual of {r:.2g} (relative to f) in the "
+                f"equation between the collocation nodes: n = {n} does not resolve f or the "
+                "kernel, or the end exponents do not fit the kernel", ResidualWarning,
+                stacklevel=stacklevel)
+    c.flags.writeable = False
+    piece = IntervalSolution(iv, e, n, c, consistency, None, None)
+    return FixedEndSolution((piece,), block.a, block.b, multi, matrix)
