@@ -311,3 +311,36 @@ def test_explicit_exponent_not_with_several_intervals_or_cases():
     with pytest.raises(sie.UnsupportedEquationError):
         sie.Equation(a=0.0, b=1.0, left=0.0, right="singular",
                      intervals=[[(0.0, 1.0)], [(0.0, 2.0)]])
+
+
+def test_equation_object_and_its_limits():
+    """sie.Equation takes an explicit exponent too (solve, on); functionals and breaks are
+    refused; a kernel singular at the other end (not given) still raises, naming it."""
+    eq = sie.Equation(a=0.0, b=1.0, left=0.0, right="singular", intervals=[(0.0, 1.0)],
+                      kernel=edge_kernel)
+    F = tip_factor(eq.solve(minus_p, n=96), 1.0)
+    assert abs(F - tip_factor(edge_crack(96), 1.0)) < 1e-15
+    F2 = tip_factor(eq.on([(0.0, 2.0)]).solve(minus_p, n=96), 2.0)   # F is scale-free
+    assert abs(F2 - F) < 1e-12
+    with pytest.raises(sie.UnsupportedEquationError):
+        eq.functionals(minus_p, n=8)
+    with pytest.raises(sie.UnsupportedEquationError):
+        eq.solve(minus_p, n=8, breaks=[0.5])
+    mirrored = lambda x, t: edge_kernel(1.0 - x, 1.0 - t)        # noqa: E731
+    with pytest.raises(sie.KernelSingularityError, match=r"right=<float>"):
+        sie.solve(minus_p, a=0.0, b=1.0, n=8, left=0.0, right="singular",
+                  intervals=[(0.0, 1.0)], kernel=mirrored)
+
+
+def test_mirrored_edge_crack():
+    """The edge crack with the surface at the right end: x -> 1 - x turns the equation into
+    one with the kernel -k(1 - x, 1 - t) and phi'(x) = -phi(1 - x); the explicit exponent at
+    the right end (alpha = 0: H[w] by the reflected closed form, the rule graded toward +1)
+    gives the same tip value."""
+    sol = sie.solve(minus_p, a=0.0, b=1.0, n=64, left="singular", right=0.0,
+                    intervals=[(0.0, 1.0)], kernel=lambda x, t: -edge_kernel(1.0 - x, 1.0 - t))
+    assert sol.alpha == (0.0,) and sol.beta == (-0.5,)
+    ref = edge_crack(64)
+    assert abs(sol.endpoint_value(-1, 0) + ref.endpoint_value(1, 0)) < 1e-12
+    s = np.array([0.1, 0.5, 0.9])
+    np.testing.assert_allclose(sol(s), -ref(1.0 - s), rtol=1e-11)
