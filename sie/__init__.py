@@ -29,7 +29,8 @@ from .errors import (CallableOutputError, EvaluationPointError, InconsistentEqua
                      InvalidBreakpointError, InvalidCoefficientError, InvalidEndConditionError,
                      InvalidExponentError, InvalidIntervalError, InvalidOrderError,
                      KernelSingularityError, PerIntervalArgumentError, ResidualWarning,
-                     SideConditionError, SIEInputError, SIEWarning, UnsupportedEquationError)
+                     ResolutionWarning, SideConditionError, SIEInputError, SIEWarning,
+                     UnsupportedEquationError)
 from .gaussjacobi import gauss_jacobi
 from .jacobi import jacobi_norms, jacobi_series
 from .exponents import Exponents, sie_exponents
@@ -62,5 +63,5 @@ __all__ = [
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",
     "InvalidBreakpointError", "EvaluationPointError", "InvalidIntervalError",
     "PerIntervalArgumentError", "KernelSingularityError", "UnsupportedEquationError",
-    "SIEWarning", "InconsistentEquationWarning", "ResidualWarning",
+    "SIEWarning", "InconsistentEquationWarning", "ResidualWarning", "ResolutionWarning",
 ]

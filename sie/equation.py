@@ -26,13 +26,14 @@ import math
 
 import numpy as np
 
+from .auto import check_tol, solve_auto
 from .errors import (CallableOutputError, InvalidCoefficientError, InvalidIntervalError,
-                     PerIntervalArgumentError, SideConditionError, UnsupportedEquationError,
-                     real_array)
+                     InvalidOrderError, PerIntervalArgumentError, SideConditionError,
+                     UnsupportedEquationError, real_array)
 from .exponents import check_coefficients, check_end, exponents_of
 from .fixed_ends import explicit_exponents, is_explicit, solve_fixed
 from .block import Block
-from .intervals import Interval, check_intervals, per_interval
+from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
 from .solver import block_functionals, solve_blocks
 
@@ -303,7 +304,7 @@ class Equation:
         return self._exps
 
     # -- solving ------------------------------------------------------------------------------
-    def solve(self, f, *, n, total=None, breaks=(), check_residual=True):
+    def solve(self, f, *, n, total=None, breaks=(), check_residual=True, tol=None):
         """psi for the right-hand side ``f`` with ``n`` Jacobi coefficients per interval.
 
         Parameters
@@ -311,9 +312,11 @@ class Equation:
         f : callable
             Vectorised right-hand side f(s), s in real coordinates (with a case axis,
             called once with the nodes of all B equations).
-        n : int or sequence of int
+        n : int, sequence of int, or "auto"
             Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
-            ``sie.N_MAX``; one shared n with a case axis.
+            ``sie.N_MAX``; one shared n with a case axis.  "auto": grown per interval from
+            16 by doubling until the series' tail is below ``tol`` (:mod:`sie.auto`; not
+            with a case axis); the solution's ``n`` reports what was used.
         total : float or sequence, optional
             int psi over each interval of index 1 (both ends singular), None for the
             others; with a case axis, one per case (or shared).
@@ -324,6 +327,9 @@ class Equation:
             Check the equation between the collocation nodes and warn
             (``ResidualWarning``) where it is not met (several intervals or a kernel,
             without breaks: elsewhere the collocation is exact by construction).
+        tol : float, optional
+            With ``n="auto"``: the relative size of the series' tail that counts as
+            resolved (default 1e-13; in [1e-15, 1e-2]).
 
         Returns
         -------
@@ -335,9 +341,35 @@ class Equation:
         PerIntervalArgumentError, KernelSingularityError, CallableOutputError
             As for :func:`sie.solve`.
         UnsupportedEquationError
-            ``breaks`` with a case axis.
+            ``breaks`` or ``n="auto"`` with a case axis.
+
+        Warns
+        -----
+        ResolutionWarning
+            ``n="auto"`` reached its largest n without resolving an interval.
         """
+        if isinstance(n, str) or tol is not None:
+            return self._solve_auto(f, n, total, breaks, check_residual, tol)
         return self._solve(f, n, total, breaks, check_residual, stacklevel=4)
+
+    def _solve_auto(self, f, n, total, breaks, check_residual, tol, stacklevel=4):
+        """:meth:`solve` with ``n="auto"`` (:func:`sie.auto.solve_auto`)."""
+        if not (isinstance(n, str) and n == "auto"):
+            if isinstance(n, str):
+                raise InvalidOrderError(f'n must be an integer, one per interval, or "auto", '
+                                        f"got {n!r}")
+            raise InvalidOrderError(f'tol is for n="auto" only (the tolerance n is chosen '
+                                    f"for), got n = {n!r} with tol = {tol!r}")
+        if self.cases is not None:
+            raise UnsupportedEquationError('n="auto" chooses n per equation: solve a case '
+                                           "axis at a given n")
+        tol = check_tol(tol)
+        _check_callable("f", f, "vectorised callable f(s)")
+        ivs = tuple(blk.interval for blk in self.blocks)
+        brs = split_breaks(breaks, ivs)
+        return solve_auto(lambda ns: self._solve(f, ns if self._multi else ns[0], total,
+                                                 breaks, check_residual, stacklevel + 3),
+                          len(ivs), [br.size > 0 for br in brs], tol, stacklevel)
 
     def _solve(self, f, n, total, breaks, check_residual, stacklevel):
         """:meth:`solve`, its warnings ``stacklevel`` frames above solve_blocks' caller."""
@@ -530,7 +562,7 @@ def _case_total(total, eq):
 
 
 def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), intervals=None,
-          check_residual=True):
+          check_residual=True, tol=None):
     """Solve a psi + (b/pi) PV int_L psi/(t-s) dt + int_L k(s,t) psi(t) dt = f(s) on L.
 
     The one-call form of ``sie.Equation(a=a, b=b, left=left, right=right,
@@ -544,9 +576,12 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     a, b : float or sequence of float
         Coefficients, shared or one per interval; b != 0.  cot(pi alpha0) = -a/b fixes the
         exponents.
-    n : int or sequence of int
+    n : int, sequence of int, or "auto"
         Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
-        ``N_MAX``.
+        ``N_MAX``.  "auto": chosen per interval, from 16 doubling until the series' tail
+        (in the orthonormal scale) is at most ``tol`` times its largest term (with breaks:
+        until phi stops changing by more than ``tol``), at most 4096 (:mod:`sie.auto`);
+        the solution's ``n`` reports what was used.
     left, right : {"bounded", "singular"}, float, or a sequence of them
         Behaviour of psi at the left and right end of each interval, or an explicit
         exponent in (-1, 1) for an end where the kernel has a fixed singularity (one
@@ -571,6 +606,9 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         collocation is exact by construction).  False skips the check and its cost (f at 7
         more points per interval), for a caller that solves many trial problems and ignores
         the warning.
+    tol : float, optional
+        With ``n="auto"``: the relative size of the series' tail that counts as resolved
+        (default 1e-13, in [1e-15, 1e-2]).  Given with an integer n: InvalidOrderError.
 
     Returns
     -------
@@ -583,7 +621,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     InvalidEndConditionError
         ``left`` or ``right`` not "bounded", "singular" or a real number in (-1, 1).
     InvalidOrderError
-        n not an integer, n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``.
+        n not an integer or "auto", n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``;
+        ``tol`` outside [1e-15, 1e-2] or given with an integer n.
     SideConditionError
         ``total`` missing where kappa = 1, given elsewhere, or not finite.
     InvalidBreakpointError
@@ -604,6 +643,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         Index -1 on an interval and f violates its solvability condition.
     ResidualWarning
         The equation is not satisfied between the nodes (unresolved f or kernel).
+    ResolutionWarning
+        ``n="auto"`` reached n = 4096 on an interval without resolving it.
 
     Notes
     -----
@@ -638,4 +679,6 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     1.0
     """
     eq = Equation(a=a, b=b, left=left, right=right, intervals=intervals, kernel=kernel)
+    if isinstance(n, str) or tol is not None:
+        return eq._solve_auto(f, n, total, breaks, check_residual, tol, stacklevel=4)
     return eq._solve(f, n, total, breaks, check_residual, stacklevel=4)   # at our caller

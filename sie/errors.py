@@ -25,6 +25,7 @@ __all__ = [
     "SIEWarning",
     "InconsistentEquationWarning",
     "ResidualWarning",
+    "ResolutionWarning",
 ]
 
 
@@ -320,6 +321,25 @@ class ResidualWarning(SIEWarning):
     ...                     kernel=lambda s, t: np.exp(30.0 * s * t))
     >>> [w.category.__name__ for w in caught]
     ['ResidualWarning']
+    """
+
+
+class ResolutionWarning(SIEWarning):
+    """``n="auto"`` stopped at its largest n (:data:`sie.auto.N_AUTO_MAX`) on an interval
+    whose series is not resolved to ``tol``: the solution returned is the last one, and its
+    error is about the size of the series' tail (given in the message).  Usually a feature
+    the Jacobi basis does not carry: a kink or jump in f (pass ``breaks=``), a fixed
+    singularity at an end (give its exponent), or an interval that should be split.
+
+    Examples
+    --------
+    >>> import warnings, numpy as np, sie
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     sol = sie.solve(lambda s: np.abs(s - 0.3), a=0.0, b=1.0, n="auto", tol=1e-13,
+    ...                     left="bounded", right="singular")
+    >>> [w.category.__name__ for w in caught], sol.n
+    (['ResolutionWarning'], 4096)
     """
 
 
