@@ -36,6 +36,7 @@ from .block import Block
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
 from .solver import block_functionals, solve_blocks
+from .systems import solve_system
 
 __all__ = ["Equation", "solve"]
 
@@ -561,6 +562,33 @@ def _case_total(total, eq):
     return t
 
 
+def _is_matrix(v):
+    """An m x m coefficient (a system), as opposed to one per interval or per case."""
+    return isinstance(v, np.ndarray) and v.ndim == 2 or \
+        isinstance(v, (list, tuple)) and len(v) > 0 and all(
+            isinstance(r, (list, tuple, np.ndarray)) and np.ndim(r) == 1 for r in v)
+
+
+def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol):
+    """:func:`solve` with m x m coefficients: :func:`sie.systems.solve_system` (one interval,
+    no kernel, no breaks, a given n)."""
+    for name, given in (("kernel", kernel is not None), ("breaks", bool(np.size(breaks))),
+                        ('n="auto"', isinstance(n, str) or tol is not None)):
+        if given:
+            raise UnsupportedEquationError(
+                f"a system (m x m a and b) takes no {name} yet: one interval, constant "
+                "coefficients, a given n (sie.solve_system)")
+    interval = (-1.0, 1.0)
+    if intervals is not None:
+        ivs = list(intervals)
+        if len(ivs) != 1:
+            raise UnsupportedEquationError(
+                f"a system (m x m a and b) is solved on one interval, got {len(ivs)}")
+        interval = tuple(ivs[0])
+    a = np.zeros(np.shape(b)) if np.ndim(a) == 0 and a == 0 else a
+    return solve_system(f, a, b, n=n, left=left, right=right, total=total, interval=interval)
+
+
 def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), intervals=None,
           check_residual=True, tol=None):
     """Solve a psi + (b/pi) PV int_L psi/(t-s) dt + int_L k(s,t) psi(t) dt = f(s) on L.
@@ -573,9 +601,12 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     ----------
     f : callable
         Vectorised right-hand side f(s) (s in real coordinates).
-    a, b : float or sequence of float
+    a, b : float, sequence of float, or m x m arrays
         Coefficients, shared or one per interval; b != 0.  cot(pi alpha0) = -a/b fixes the
-        exponents.
+        exponents.  Square matrices A, B (B invertible; a scalar 0 for A = 0) make it a
+        system of m equations in psi = (psi_1 .. psi_m), solved by
+        :func:`sie.solve_system` (one interval, no kernel or breaks, a given n; f returns
+        shape (m, len(s)), ``left``/``right`` per mode, ``total`` per mode of index 1).
     n : int, sequence of int, or "auto"
         Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
         ``N_MAX``.  "auto": chosen per interval, from 16 doubling until the series' tail
@@ -678,6 +709,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     >>> round(sol.integral() / (np.pi / 2), 12)                        # int psi = pi/2
     1.0
     """
+    if _is_matrix(a) or _is_matrix(b):
+        return _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol)
     eq = Equation(a=a, b=b, left=left, right=right, intervals=intervals, kernel=kernel)
     if isinstance(n, str) or tol is not None:
         return eq._solve_auto(f, n, total, breaks, check_residual, tol, stacklevel=4)

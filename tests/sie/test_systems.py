@@ -310,3 +310,38 @@ def test_bad_ends_and_totals():
     with pytest.raises(sie.InvalidIntervalError):
         solve_system(_f2, A, np.eye(2), n=4, left="bounded", right="singular",
                      interval=(1.0, -1.0))
+
+
+# --------------------------------------------------------------------------
+# through sie.solve
+# --------------------------------------------------------------------------
+def test_solve_with_matrix_coefficients_is_the_system():
+    """sie.solve(f, a=A, b=B, ...) with m x m A, B is sie.solve_system (the same numbers),
+    on the default interval and on intervals=[(c, d)]; a scalar 0 stands for A = 0."""
+    A = np.array([[0.3, 0.1], [0.05, -0.2]])
+    B = np.array([[1.0, 0.2], [0.0, 1.0]])
+
+    def f(s):
+        return np.array([np.cos(s), np.sin(s)])
+    x = np.linspace(-0.9, 1.9, 9)
+    ref = solve_system(f, A, B, n=12, left="singular", right="bounded", interval=(-1.0, 2.0))
+    got = sie.solve(f, a=A, b=B.tolist(), n=12, left="singular", right="bounded",
+                    intervals=[(-1.0, 2.0)])
+    assert np.array_equal(got(x), ref(x))
+    zero = sie.solve(lambda s: B @ np.array([-s, -2 * s]), a=0.0, b=B, n=4, left="bounded",
+                     right="bounded")
+    np.testing.assert_allclose(zero(np.array([0.0, 0.6])), [[1.0, 0.8], [2.0, 1.6]],
+                               rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("extra,match", [
+    (dict(kernel=lambda s, t: s * t), "no kernel"),
+    (dict(breaks=(0.2,)), "no breaks"),
+    (dict(n="auto"), 'no n="auto"'),
+    (dict(intervals=[(-1.0, -0.5), (0.0, 1.0)]), "one interval, got 2"),
+])
+def test_solve_with_matrix_coefficients_refuses_what_systems_lack(extra, match):
+    kw = dict(a=np.eye(2) * 0.3, b=np.eye(2), n=6, left="bounded", right="singular")
+    kw.update(extra)
+    with pytest.raises(sie.UnsupportedEquationError, match=match):
+        sie.solve(lambda s: np.array([np.cos(s), np.sin(s)]), **kw)
