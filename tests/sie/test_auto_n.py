@@ -12,7 +12,6 @@ import warnings
 
 import numpy as np
 import pytest
-from mpmath import mp
 
 import sie
 from sie.auto import N_AUTO_MAX, N_AUTO_START, series_resolved
