@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 import sie
-from sie.auto import N_AUTO_MAX, N_AUTO_START, series_resolved
+import sie.auto
+from sie.auto import N_AUTO_START, series_resolved
 from sie.errors import (InvalidOrderError, ResidualWarning, ResolutionWarning,
                         UnsupportedEquationError)
 import manufactured_intervals as MI
@@ -91,17 +92,21 @@ def test_smooth_f_is_resolved_to_tol(tol, left, right):
     assert looser.n <= sol.n
 
 
-def test_kink_without_breaks_warns_at_the_limit_and_with_breaks_resolves():
+def test_kink_without_breaks_warns_at_the_limit_and_with_breaks_resolves(monkeypatch):
     """|s - 0.3| has a kink: no n resolves its series, and auto says so (ResolutionWarning
-    at N_AUTO_MAX, pointing at the caller's line); with breaks=(0.3,) the correction carries
-    the kink and auto stops early, agreeing with a solve at 8 times its n."""
+    at its largest n, here lowered to 256 to keep the test short; it is 4096, the doctest of
+    ResolutionWarning goes there), pointing at the caller's line; with breaks=(0.3,) the
+    correction carries the kink and auto stops early, agreeing with a solve at 8 times its
+    n."""
+    monkeypatch.setattr(sie.auto, "N_AUTO_MAX", 256)
+
     def f(s):
         return np.abs(s - 0.3)
     kw = dict(a=0.0, b=1.0, left="bounded", right="singular")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         sol = sie.solve(f, n="auto", **kw)
-    assert sol.n == N_AUTO_MAX
+    assert sol.n == 256
     assert [w.category for w in caught] == [ResolutionWarning]
     assert caught[0].filename == __file__ and "breaks=" in str(caught[0].message)
     sol, caught = _no_warnings(lambda: sie.solve(f, n="auto", breaks=(0.3,), **kw))
@@ -140,10 +145,11 @@ def test_case_axis_takes_no_auto():
         eq.solve(np.cos, n="auto")
 
 
-def test_residual_warning_of_the_returned_solution_is_kept():
-    """A kernel that no n up to the limit resolves within the residual check: the warnings
-    of the returned solution reach the caller (ResidualWarning, ResolutionWarning), those of
-    the smaller solves before it do not repeat."""
+def test_residual_warning_of_the_returned_solution_is_kept(monkeypatch):
+    """A kernel that no n up to the limit (lowered to 64) resolves within the residual
+    check: the warnings of the returned solution reach the caller (ResidualWarning,
+    ResolutionWarning), those of the smaller solves before it do not repeat."""
+    monkeypatch.setattr(sie.auto, "N_AUTO_MAX", 64)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         sie.solve(np.cos, a=0.0, b=1.0, n="auto", tol=1e-15, left="bounded",
