@@ -40,6 +40,7 @@ from .solver import Functionals
 from .block import Block
 from .equation import Equation, solve
 from .fixed_ends import FixedEndSolution, end_exponent
+from .junctions import junction_exponent, solve_junctions
 from .special import jacobi_moment
 from .systems import (ModeExponents, SystemModes, SystemSolution, mode_exponents,
                       solve_system, system_modes)
@@ -59,6 +60,7 @@ __all__ = [
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "solve_system", "system_modes", "mode_exponents", "SystemSolution", "SystemModes",
     "ModeExponents", "end_exponent", "FixedEndSolution",
+    "solve_junctions", "junction_exponent",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",
     "InvalidBreakpointError", "EvaluationPointError", "InvalidIntervalError",
