@@ -92,7 +92,10 @@ int psi = V (mu0 c_0): a square linear system, refused when singular.
 **Evaluation.**  psi = Re(V phi) (the imaginary part is rounding for real data; its relative
 size at seven check points is :attr:`SystemSolution.imaginary`, warned above 1e-8), and
 inside the interval H[psi] = V H[phi] with H[phi_k] = -lambda_k phi_k +
-sum_j c_kj (-2^{-kappa}/sin(pi alpha_k)) P_{j-kappa}^{(-alpha_k,-beta_k)} from (4).
+sum_j c_kj (-2^{-kappa}/sin(pi alpha_k)) P_{j-kappa}^{(-alpha_k,-beta_k)} from (4).  Off
+the interval, per mode (:func:`mode_cauchy_off`): (Omega Phi)(z)/sin(pi alpha) plus that
+polynomial at z next to the interval, Omega = (z-1)^alpha (z+1)^beta, whose jump is
+2i sin(pi alpha) w; the functions of the second kind by backward recurrence elsewhere.
 
 References
 ----------
@@ -120,10 +123,10 @@ from .errors import (CallableOutputError, EvaluationPointError, InconsistentEqua
                      check_finite_real, check_order, is_number)
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_norms_cached, jacobi_series, jacobi_vandermonde
+from .jacobi import _vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
-           "SystemSolution", "N_MAX_SYSTEM"]
+           "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off"]
 
 #: Largest n :func:`solve_system` accepts: a complex mode's projection is a dense solve,
 #: O(n^3) (about 1 s at n = 2000 on two cores).
@@ -480,6 +483,147 @@ def _mu0(e: ModeExponents):
 
 
 # --------------------------------------------------------------------------
+# the Cauchy transform of a mode off the interval
+# --------------------------------------------------------------------------
+_NEAR_LOG = 3.5     # N log(rho) below this: the closed form (it cancels ~rho^N <= 33)
+_MILLER_LOG = 40.0  # extra terms of the backward recurrence: rho^-L <= e^-40
+_F0_SERIES = 2.0    # abs(z) from which F_0 is summed from the moments (60 terms: 2^-60)
+_F0_TERMS = 60
+_HUGE = 1e100       # abs(z) from which two terms of the expansion at infinity are exact
+
+
+def _series_at(c, a, b, z):
+    """sum_j c_j P_j^{(a,b)}(z) at complex points z (complex a, b, c)."""
+    V = np.empty((z.size, len(c)), dtype=complex)
+    if len(c) == 0:
+        return np.zeros(z.shape, dtype=complex)
+    return _vandermonde_into(complex(a), complex(b), z.astype(complex), V) @ \
+        np.asarray(c, dtype=complex)
+
+
+def _omega(e: ModeExponents, z):
+    """(z-1)^alpha (z+1)^beta = ((z-1)/(z+1))^alpha (z+1)^(-kappa), cut on [-1, 1] only (the
+    two principal powers' cuts on (-inf, -1) cancel: alpha + beta = -kappa is an integer);
+    above the interval it is w e^{i pi alpha}."""
+    return np.exp(e.alpha * np.log((z - 1.0) / (z + 1.0))) * (z + 1.0) ** (-e.kappa)
+
+
+def _moment_images(e: ModeExponents, c):
+    """The coefficients of sum_j c_j P_j^{(-alpha,-beta)} that the dominant identity (4)
+    gives for H[w sum c_j P_j]: -2^{-kappa}/sin(pi alpha) c shifted by kappa."""
+    fac = -(2.0 ** -e.kappa) / e.sin
+    if e.kappa == 1:
+        return fac * c[1:]
+    if e.kappa == 0:
+        return fac * c
+    return np.concatenate([[0.0], fac * c])
+
+
+def _weight_moments(e: ModeExponents, mu0, K):
+    """mu_k = int (1-t)^alpha (1+t)^beta t^k dt, k < K, by (k + alpha + beta + 2) mu_{k+1} =
+    (beta - alpha) mu_k + k mu_{k-1} (integrate d/dt[(1-t)^{alpha+1} (1+t)^{beta+1} t^k])."""
+    mu = np.empty(K, dtype=complex)
+    mu[0] = mu0
+    ab2 = (e.alpha + 1.0) + (e.beta + 1.0)
+    if K > 1:
+        mu[1] = (e.beta - e.alpha) * mu0 / ab2
+    for k in range(1, K - 1):
+        mu[k + 1] = ((e.beta - e.alpha) * mu[k] + k * mu[k - 1]) / (k + ab2)
+    return mu
+
+
+def _f0(e: ModeExponents, mu0, z):
+    """F_0(z) = (1/pi) int w/(t - z) dt: the closed form (Omega(z) - 2^{-kappa}
+    P_{-kappa}^{(-alpha,-beta)}(z)) / sin(pi alpha) below abs(z) = _F0_SERIES (it cancels
+    at most abs(z)^2 there), the moments' series -(1/pi) sum mu_k z^{-k-1} beyond."""
+    out = np.empty(z.shape, dtype=complex)
+    far = np.abs(z) >= _F0_SERIES
+    if far.any():
+        mu = _weight_moments(e, mu0, _F0_TERMS)
+        zi = 1.0 / z[far]
+        acc = np.zeros(zi.shape, dtype=complex)
+        for k in range(_F0_TERMS - 1, -1, -1):          # Horner in 1/z
+            acc = acc * zi + mu[k]
+        out[far] = -acc * zi / np.pi
+    near = ~far
+    if near.any():
+        zn = z[near]
+        poly = _series_at(_moment_images(e, np.array([1.0 + 0j])), -e.alpha, -e.beta, zn)
+        out[near] = _omega(e, zn) / e.sin + poly
+    return out
+
+
+def _recurrence_coefficients(a, b, J):
+    """A_k, B_k, C_k, k = 1..J-1, of P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1} (DLMF
+    18.9.1-2, as sie.jacobi's kernel), complex a, b."""
+    k = np.arange(1, J, dtype=float)
+    abp2 = (a + 1.0) + (b + 1.0)
+    s = 2.0 * (k - 1) + abp2
+    d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+    return ((s + 1.0) * (s + 2.0) * s / d, (s + 1.0) * (a * a - b * b) / d,
+            2.0 * (k + a) * (k + b) * (s + 2.0) / d)
+
+
+def mode_cauchy_off(e: ModeExponents, mu0, c, z):
+    """(1/pi) int_{-1}^{1} w(t) sum_j c_j P_j^{(alpha,beta)}(t) / (t - z) dt at z off [-1, 1]
+    (complex, or real with abs(z) > 1), for real or complex exponents.
+
+    Near the interval (N log(rho) < 3.5, rho the Bernstein parameter of z, N = len(c)): the
+    closed form (Omega(z) Phi(z)) / sin(pi alpha) + sum img_j P_j^{(-alpha,-beta)}(z) (the
+    sectionally holomorphic function whose jump is w Phi and whose boundary values give the
+    dominant identity (4); Muskhelishvili 1953, sec. 29), which cancels at most ~rho^N.
+    Elsewhere the functions of the second kind F_j(z) = (1/pi) int w P_j/(t - z), the
+    minimal solution of the three-term recurrence for j >= 1, by backward recurrence
+    (Miller's algorithm, Gautschi, SIAM Rev. 9 (1967) 24) from j = N + 40/log(rho),
+    normalised by F_0 (:func:`_f0`), summed against c."""
+    z = np.asarray(z, dtype=complex).ravel()
+    c = np.asarray(c, dtype=complex)
+    N = c.size
+    out = np.zeros(z.shape, dtype=complex)
+    if N == 0 or z.size == 0:
+        return out
+    rho = np.abs(z + np.sqrt(z - 1.0) * np.sqrt(z + 1.0))
+    log_rho = np.log(np.maximum(rho, 1.0 + 1e-300))
+    near = N * log_rho < _NEAR_LOG
+    if near.any():
+        zn = z[near]
+        out[near] = (_omega(e, zn) * _series_at(c, e.alpha, e.beta, zn) / e.sin
+                     + _series_at(_moment_images(e, c), -e.alpha, -e.beta, zn))
+    huge = np.abs(z) > _HUGE
+    if huge.any():
+        # -(1/pi)(M_0/z + M_1/z^2), M_k = int w Phi t^k: the rest is below z^-2 ~ 1e-200
+        mu = _weight_moments(e, mu0, 3)
+        M0 = c[0] * mu[0]
+        M1 = c[0] * mu[1]
+        if N > 1:               # int w P_1 t, P_1 = (a + 1) + (a + b + 2)(t - 1)/2
+            ab2 = (e.alpha + 1.0) + (e.beta + 1.0)
+            M1 += c[1] * ((e.alpha + 1.0) * mu[1] + 0.5 * ab2 * (mu[2] - mu[1]))
+        zi = 1.0 / z[huge]
+        out[huge] = -(M0 * zi + M1 * zi * zi) / np.pi
+    far = ~near & ~huge
+    if far.any():
+        zf = z[far]
+        J = N + int(np.ceil(_MILLER_LOG / float(log_rho[far].min()))) + 1
+        A, B, C = _recurrence_coefficients(e.alpha, e.beta, J)
+        f_next = np.zeros(zf.shape, dtype=complex)          # f_{k+1}
+        f_k = np.full(zf.shape, 1e-200 + 0j)                # f_k, k = J - 1
+        acc = np.zeros(zf.shape, dtype=complex)
+        for k in range(J - 1, 0, -1):
+            if k < N:
+                acc += c[k] * f_k
+            f_prev = ((A[k - 1] * zf + B[k - 1]) * f_k - f_next) / C[k - 1]
+            f_next, f_k = f_k, f_prev
+            big = np.abs(f_k) > 1e100                          # keep the scale in range
+            if big.any():
+                f_k[big] *= 1e-100
+                f_next[big] *= 1e-100
+                acc[big] *= 1e-100
+        acc += c[0] * f_k                                    # f_k is now f_0
+        out[far] = acc * (_f0(e, mu0, zf) / f_k)
+    return out
+
+
+# --------------------------------------------------------------------------
 # the solver
 # --------------------------------------------------------------------------
 def _per_mode(name, v, m):
@@ -820,22 +964,44 @@ class SystemSolution:
         vals = self._modal(u.ravel())
         return (self.modes.vectors @ vals).real.reshape((-1,) + u.shape)
 
-    def cauchy(self, s):
-        """H[psi](s) = (1/pi) PV int_c^d psi(t)/(t - s) dt for s strictly inside (c, d),
-        shape (m,) + s.shape, from the dominant identity (4) of the module docstring."""
-        u = self._local(s, open_=True).ravel()
+    def cauchy(self, z):
+        """(1/pi) PV int_c^d psi(t)/(t - z) dt, shape (m,) + z.shape.
+
+        Real z strictly inside (c, d): the principal value H[psi] from the dominant identity
+        (4) of the module docstring (real).  Real z outside [c, d]: real.  Complex z (off the
+        real segment [c, d]): complex, mode by mode by :func:`mode_cauchy_off` (the closed
+        form next to the interval, the functions of the second kind by backward recurrence
+        elsewhere), for real and complex exponents alike.  Not at the ends themselves."""
+        z = np.asarray(z)
+        if not np.isfinite(z).all():
+            raise EvaluationPointError("z must be finite")
+        c, d = self.interval
+        m, h = 0.5 * (c + d), 0.5 * (d - c)
+        u = (z.astype(complex) - m) / h if z.dtype.kind == "c" else (z.astype(float) - m) / h
+        u = np.ravel(u)
+        on_line = np.imag(u) == 0.0
+        inside = on_line & (np.abs(np.real(u)) < 1.0)
+        if (on_line & (np.abs(np.real(u)) == 1.0)).any():
+            raise EvaluationPointError(f"z must not be an end of the interval ({c!r}, {d!r})")
+        out = np.zeros((self.modes.m, u.size), dtype=complex)
+        if inside.any():
+            out[:, inside] = self._hilbert_modes(np.real(u[inside]))
+        off = ~inside
+        if off.any():
+            out[:, off] = np.array([mode_cauchy_off(e, mu, ck, u[off]) for e, mu, ck in
+                                    zip(self.exponents, self.mu0, self.coefficients)])
+        psi = self.modes.vectors @ out
+        if z.dtype.kind != "c":
+            psi = psi.real
+        return psi.reshape((-1,) + z.shape)
+
+    def _hilbert_modes(self, u):
+        """H[phi_k](u) per mode at local points strictly inside (-1, 1), complex."""
         out = []
         for e, ck in zip(self.exponents, self.coefficients):
-            fac = -(2.0 ** -e.kappa) / e.sin
-            if e.kappa == 1:
-                img = fac * ck[1:]
-            elif e.kappa == 0:
-                img = fac * ck
-            else:
-                img = np.concatenate([[0.0], fac * ck])
             out.append(-e.lam * _weight(e, u) * jacobi_series(ck, e.alpha, e.beta, u)
-                       + jacobi_series(img, -e.alpha, -e.beta, u))
-        return (self.modes.vectors @ np.array(out)).real.reshape((-1,) + np.shape(s))
+                       + jacobi_series(_moment_images(e, ck), -e.alpha, -e.beta, u))
+        return np.array(out)
 
     def integral(self):
         """int_c^d psi ds, shape (m,)."""

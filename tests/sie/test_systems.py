@@ -345,3 +345,78 @@ def test_solve_with_matrix_coefficients_refuses_what_systems_lack(extra, match):
     kw.update(extra)
     with pytest.raises(sie.UnsupportedEquationError, match=match):
         sie.solve(lambda s: np.array([np.cos(s), np.sin(s)]), **kw)
+
+
+# --------------------------------------------------------------------------
+# the Cauchy transform off the interval
+# --------------------------------------------------------------------------
+#: Off the interval (-1, 1) (scaled by the crack's a): beside it at 1e-9, next to both ends,
+#: far, on the real line outside, and both sides of the switch from the closed form to the
+#: recurrence (N log(rho) = 3.5 at n = 8: rho = 1.55, i.e. 0.5 i next to the middle).
+Z_OFF = np.array([0.3 - 1e-9j, -1.99 + 1e-3j, 1.999 + 1e-3j, 0.45j, 0.55j, -40.0 - 3.0j,
+                  3.0 + 0j, 2.0001 + 0j])
+
+
+def _quad_cauchy(density, z, a):
+    """(1/pi) int_{-a}^{a} density(t)/(t - z) dt by mpmath (30 digits), split at Re z and
+    graded toward it so that a pole beside the interval is resolved."""
+    x0 = float(np.real(z))
+    grade = [x0 + sgn * d for d in (1e-3, 1e-5, 1e-7, 1e-9) for sgn in (-1.0, 1.0)]
+    pts = [-a, a] + ([x0] + grade if abs(x0) < a - 2e-3 else [])
+    with mp.workdps(30):
+        return complex(mp.quad(lambda t: density(t) / (t - z), sorted(pts)) / mp.pi)
+
+
+@pytest.mark.parametrize("beta_d,points", [(0.3, Z_OFF), (-0.15, Z_OFF[[1, 4, 6]])])
+def test_interface_crack_cauchy_transform_off_the_crack(beta_d, points):
+    """psi_1 + i psi_2 = G cosh(pi eps)(x + 2 i eps a)(a - x)^(-1/2 + i eps)(a + x)^(-1/2 - i eps)
+    (Rice & Sih 1965): the Cauchy transform of each component at complex z, and of b at real
+    z outside (the traction ahead of the tips), against mpmath's quadrature of the closed
+    form, to 2e-15 of its size."""
+    a, G = 2.0, 0.8 - 0.3j
+    sol = _interface_crack(beta_d, G.real, G.imag, a, n=8)
+    eps = np.arctanh(beta_d) / np.pi
+
+    def b(t):
+        return G * mp.cosh(mp.pi * eps) * (t + 2j * eps * a) * (a - t) ** (-0.5 + 1j * eps) \
+            * (a + t) ** (-0.5 - 1j * eps)
+    for z in a / 2.0 * points:
+        got = sol.cauchy(np.array([z]))[:, 0]
+        if z.imag == 0.0:
+            ref = _quad_cauchy(b, z.real, a)
+            assert abs(got[0] + 1j * got[1] - ref) <= 2e-15 * abs(ref), z
+        else:
+            for k, part in ((0, mp.re), (1, mp.im)):
+                ref = _quad_cauchy(lambda t: part(b(t)), z, a)
+                assert abs(got[k] - ref) <= 2e-15 * max(abs(ref), 1e-3), (z, k)
+
+
+def test_real_modes_cauchy_transform_equals_the_scalar_solves():
+    """The decoupled system of real modes: T times the scalar solutions' Cauchy transforms
+    (sie.cauchy's recurrences, another route) at complex z and real z outside, to 1e-13."""
+    A = B3 @ T3 @ np.diag(A_MODES) @ np.linalg.inv(T3)
+    n = 30
+    scal = [sie.solve(g, a=a, b=1.0, n=n, left=l, right=r, total=0.8 if l == r == "singular"
+                      else None)
+            for g, a, (l, r) in zip(G_MODES, A_MODES, ENDS)]
+    tot = T3 @ np.array([sc.integral() for sc in scal])
+
+    def f(s):
+        return B3 @ T3 @ np.array([g(s) for g in G_MODES])
+    sol = solve_system(f, A, B3, n=n, left=[e[0] for e in ENDS], right=[e[1] for e in ENDS],
+                       total=[None, None, tot[2]])
+    for z in (Z_OFF / 2.0, np.array([1.5, -3.0, 40.0, 1.0 + 1e-7])):
+        ref = T3 @ np.array([sc.cauchy(z) for sc in scal])
+        got = sol.cauchy(z)
+        assert np.abs(got - ref).max() <= 1e-13 * np.abs(ref).max()
+
+
+def test_cauchy_transform_at_infinity_and_at_the_ends():
+    """Far away the transform of a crack with zero net opening decays like M_1/z^2 (the two
+    expansions at 1e99 and 1e101 agree in z^2 C(z)); an end is refused."""
+    sol = _interface_crack(0.3, 0.8, -0.3, 2.0)
+    z = np.array([1e8, 1e99, 1e101, 1e150])
+    scaled = sol.cauchy(z) * z ** 2
+    np.testing.assert_allclose(scaled[:, 1:], scaled[:, :1] * np.ones((1, 3)), rtol=1e-7)
+    with pytest.raises(sie.EvaluationPointError, match="end"):
+        sol.cauchy(np.array([2.0]))
