@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 from numpy.polynomial import chebyshev as cheb
 
 import sie
-from sie.junctions import junction_ratio
+from sie.junctions import _cross_images, junction_ratio
 
 
 @pytest.fixture(autouse=True)
@@ -111,6 +111,39 @@ def test_junction_exponent_example_and_range():
                                                                              abs=1e-12)
 
 
+@pytest.mark.parametrize("delta, from_left", [(1e-10, True), (1e-4, False), (3.0, True)])
+def test_cross_term_next_to_the_junction(delta, from_left):
+    """(1/pi) int w P_k / (v - x) dv at x a distance delta beyond an end of [-1, 1] (the
+    coupling of a collocation point to the neighbouring interval) against mpmath, the
+    distance (1 + v) + delta (or (1 - v) + delta) formed from the pinned distance."""
+    mp.mp.dps = 20
+    alpha, beta, n = 0.3, -0.6, 12
+    e = sie.sie_exponents(1.0, 1.0, "bounded", "bounded")
+    e = type(e)(alpha, beta, 0, e.alpha0, e.cot, e.sin, 1 + alpha, 1 + beta, 1 - alpha,
+                1 - beta)
+    got = _cross_images(n, e, np.array([delta]), from_left, 40)[0]
+    one, dlt = mp.mpf(1), mp.mpf(delta)
+
+    def integrand(k):
+        def F(v, pin=None):
+            dl, dr = 1 + v, 1 - v
+            if pin is not None:
+                dl, dr = (pin[2], 2 - pin[2]) if pin[0] == -one else (2 - pin[2], pin[2])
+            if dl <= 0 or dr <= 0:
+                return mp.mpf(0)
+            denom = (dl + dlt) if from_left else -(dr + dlt)
+            return dr ** alpha * dl ** beta * mp.jacobi(k, alpha, beta, v) / denom
+        return F
+
+    # the reference split toward the near end on the scale of delta too
+    near = -one + 4 * dlt if from_left else one - 4 * dlt
+    cuts = sorted({-one, one, mp.mpf(0)} | ({near} if delta < 0.25 else set()))
+    for k in (0, 5, 11):
+        ref = sum(_segment(integrand(k), p0, p1, {-one: beta, one: alpha})
+                  for p0, p1 in zip(cuts[:-1], cuts[1:])) / mp.pi
+        assert abs(got[k] - float(ref)) < 1e-13 * max(1.0, abs(float(ref))), (k, got[k], ref)
+
+
 # ---------------------------------------------------------------------------------------
 # the index
 # ---------------------------------------------------------------------------------------
@@ -167,47 +200,56 @@ def _segment(F, p0, p1, singular):
 
 
 def _manufactured(a, b, ends, left, mid, right, g, r):
-    """psi = W (sigma_i abs(t - e)^gamma g(t) + r(t)) and f from it (an interpolant of the
-    mpmath values on each interval, after checking that they are smooth)."""
-    c, e, d = (mp.mpf(v) for v in ends)
+    """psi = W (sigma_i prod_j abs(t - e_j)^gamma_j g(t) + r(t)) on the intervals between
+    ``ends`` = (c, e_1, ..., d) (``mid``: one choice or one per junction; sigma_1 = 1,
+    sigma_(i+1) = sigma_i junction_ratio at e_i), and f from it (an interpolant of the mpmath
+    values on each interval, after checking that they are smooth)."""
+    J = len(ends) - 1
+    mids = [mid] * (J - 1) if isinstance(mid, str) else list(mid)
+    pts = [mp.mpf(v) for v in ends]
+    c, d, es = pts[0], pts[-1], pts[1:-1]
     beta_c = sie.sie_exponents(a[0], b[0], left, "bounded").beta
-    alpha_d = sie.sie_exponents(a[1], b[1], "bounded", right).alpha
-    g0 = sie.junction_exponent(a[0], b[0], a[1], b[1])
-    gamma = g0 if mid == "bounded" else g0 - 1.0
-    sigma = junction_ratio(a[0], b[0], a[1], b[1], gamma)
+    alpha_d = sie.sie_exponents(a[-1], b[-1], "bounded", right).alpha
+    gammas, sigmas = [], [1.0]
+    for i, m in enumerate(mids):
+        g0 = sie.junction_exponent(a[i], b[i], a[i + 1], b[i + 1])
+        gammas.append(g0 if m == "bounded" else g0 - 1.0)
+        sigmas.append(sigmas[-1] * junction_ratio(a[i], b[i], a[i + 1], b[i + 1], gammas[-1]))
+    singular = dict(zip(pts, [beta_c] + gammas + [alpha_d]))
 
     def psi(t, pin=None):
         """psi at t; ``pin`` = (point, side, distance): t lies at that distance from one of
-        c, e, d on that side, and the factor of that point is taken from the distance (t
+        the ends on that side, and the factor of that point is taken from the distance (t
         itself rounds to the point within ~1e-20 of it, where the substituted integrand is
         still finite)."""
-        dist = {c: t - c, e: abs(t - e), d: d - t}
-        side = t < e
+        dist = {p: abs(t - p) for p in es}
+        dist[c], dist[d] = t - c, d - t
+        piece = sum(1 for p in es if t > p)
         if pin is not None:
             dist[pin[0]] = pin[2]
-            if pin[0] == e:
-                side = pin[1] < 0
+            if pin[0] in es:
+                piece = es.index(pin[0]) + (1 if pin[1] > 0 else 0)
         if min(dist.values()) <= 0:
             return mp.mpf(0)
-        s = 1 if side else sigma
-        return dist[c] ** beta_c * dist[d] ** alpha_d * (s * dist[e] ** gamma * g(t) + r(t))
-
-    singular = {c: beta_c, e: gamma, d: alpha_d}
+        power = sigmas[piece] * g(t)
+        for p, gm in zip(es, gammas):
+            power *= dist[p] ** gm
+        return dist[c] ** beta_c * dist[d] ** alpha_d * (power + r(t))
 
     def f_mp(x):
-        rad = min(x - c, abs(x - e), d - x) / 2
+        rad = min(abs(x - p) for p in pts) / 2
         pv = mp.quad(lambda u: (psi(x + u) - psi(x - u)) / u, [0, rad])
-        pts = sorted({c, e, d, x - rad, x + rad})
-        for p0, p1 in zip(pts[:-1], pts[1:]):
+        edges = sorted(set(pts) | {x - rad, x + rad})
+        for p0, p1 in zip(edges[:-1], edges[1:]):
             if not (p0 == x - rad and p1 == x + rad):
                 pv += _segment(lambda t, pin=None: psi(t, pin) / (t - x), p0, p1,
                                singular)
-        i = 0 if x < e else 1
+        i = sum(1 for p in es if x > p)
         return a[i] * psi(x) + b[i] * pv / mp.pi
 
     fits = []
     xs = np.cos(np.pi * (np.arange(_M) + 0.5) / _M)
-    for lo, hi in ((ends[0], ends[1]), (ends[1], ends[2])):
+    for lo, hi in zip(ends[:-1], ends[1:]):
         vals = [float(f_mp(mp.mpf(lo) + (mp.mpf(hi) - lo) * (mp.mpf(float(u)) + 1) / 2))
                 for u in xs]
         co = cheb.chebfit(xs, vals, _M - 1)
@@ -227,11 +269,11 @@ def _manufactured(a, b, ends, left, mid, right, g, r):
         return np.array([float(psi(mp.mpf(float(v)))) for v in s])
 
     def integral(lo, hi):
-        """int_lo^hi psi, lo < hi among c, e, d."""
-        pts = [p for p in (c, e, d) if mp.mpf(lo) <= p <= mp.mpf(hi)]
-        return float(sum(_segment(psi, p0, p1, singular) for p0, p1 in zip(pts[:-1], pts[1:])))
+        """int_lo^hi psi, lo < hi among the ends."""
+        sel = [p for p in pts if mp.mpf(lo) <= p <= mp.mpf(hi)]
+        return float(sum(_segment(psi, p0, p1, singular) for p0, p1 in zip(sel[:-1], sel[1:])))
 
-    return f, psi_np, integral, gamma
+    return f, psi_np, integral, (gammas[0] if len(gammas) == 1 else tuple(gammas))
 
 
 _ENDS = (-1.0, 0.5, 2.0)
@@ -321,6 +363,33 @@ def test_manufactured_index_1_and_minus_1():
             assert sol.integral() == pytest.approx(tot, abs=1e-11)
         else:
             assert sol.consistency < 1e-11
+
+
+def test_manufactured_two_junctions():
+    """Three intervals, a = (0, 1, -1/2), b = (1, 2, 1), junctions bounded and singular
+    (gamma = 0.852416, -0.704833), index 1: a power part and a regular part, recovered to
+    1e-8 (5e-10 from n = 24 on: the least-squares plateau of the regular part's 12
+    columns)."""
+    mp.mp.dps = 20
+    a, b = (0.0, 1.0, -0.5), (1.0, 2.0, 1.0)
+    ends = (-1.0, -0.2, 0.7, 2.0)
+    f, psi_np, integral, gammas = _manufactured(a, b, ends, "singular",
+                                                ["bounded", "singular"], "singular",
+                                                lambda t: 1 + t / 5, lambda t: mp.cos(t))
+    tot = integral(ends[0], ends[-1])
+    s = np.array([-0.9, -0.3, -0.21, -0.19, 0.0, 0.69, 0.71, 1.5])
+    exact = psi_np(s)
+    errs = []
+    for n in (8, 16, 32):
+        sol = sie.solve_junctions(f, a, b, list(zip(ends[:-1], ends[1:])), n=n,
+                                  left="singular", right="singular",
+                                  junctions=["bounded", "singular"], total=tot,
+                                  check_residual=False)
+        errs.append(float(np.max(np.abs(sol(s) - exact))))
+    assert sol.kappa == 1 and sol.gamma == pytest.approx(gammas, abs=1e-15)
+    # 8e-6, 1e-9, 5e-10: geometric, then the regular part's least-squares plateau
+    assert errs[1] < 1e-3 * errs[0] and errs[-1] < 1e-8, errs
+    assert sol.integral() == pytest.approx(tot, abs=1e-10)
 
 
 # ---------------------------------------------------------------------------------------
