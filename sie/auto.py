@@ -76,7 +76,7 @@ def _phi_at_checks(piece):
     return piece.phi_local(_CHECK_U)
 
 
-def solve_auto(solve_at, n_intervals, has_breaks, tol, stacklevel):
+def solve_auto(solve_at, n_intervals, has_breaks, tol, stacklevel, n_max=None):
     """Solve with n chosen per interval.
 
     Parameters
@@ -91,13 +91,16 @@ def solve_auto(solve_at, n_intervals, has_breaks, tol, stacklevel):
         Checked (:func:`check_tol`).
     stacklevel : int
         For the warning.
+    n_max : int, optional
+        The largest n of the path that solves (default and at most :data:`N_AUTO_MAX`).
 
     Returns
     -------
     Solution
         The last solution; ``n`` per interval is what was used.
     """
-    ns = [N_AUTO_START] * n_intervals
+    top = N_AUTO_MAX if n_max is None else min(n_max, N_AUTO_MAX)
+    ns = [min(N_AUTO_START, top)] * n_intervals
     previous = None
     while True:
         # the warnings of a solve that is not the last (a residual at too small an n) are
@@ -123,7 +126,7 @@ def solve_auto(solve_at, n_intervals, has_breaks, tol, stacklevel):
         if not any(grow):
             _warn_again(caught, stacklevel)
             return sol
-        stuck = [j for j in range(n_intervals) if grow[j] and ns[j] >= N_AUTO_MAX]
+        stuck = [j for j in range(n_intervals) if grow[j] and ns[j] >= top]
         if stuck:
             j = stuck[0]
             where = f" on interval {j}" if n_intervals > 1 else ""
@@ -136,4 +139,4 @@ def solve_auto(solve_at, n_intervals, has_breaks, tol, stacklevel):
             _warn_again(caught, stacklevel)
             return sol
         previous = [_phi_at_checks(p) for p in pieces]
-        ns = [min(2 * nj, N_AUTO_MAX) if g else nj for nj, g in zip(ns, grow)]
+        ns = [min(2 * nj, top) if g else nj for nj, g in zip(ns, grow)]

@@ -31,7 +31,7 @@ from .errors import (CallableOutputError, InvalidCoefficientError, InvalidInterv
                      InvalidOrderError, PerIntervalArgumentError, SideConditionError,
                      UnsupportedEquationError, real_array)
 from .exponents import check_coefficients, check_end, exponents_of
-from .fixed_ends import explicit_exponents, is_explicit, solve_fixed
+from .fixed_ends import _N_MAX as FIXED_N_MAX, explicit_exponents, is_explicit, solve_fixed
 from .block import Block
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
@@ -368,9 +368,11 @@ class Equation:
         _check_callable("f", f, "vectorised callable f(s)")
         ivs = tuple(blk.interval for blk in self.blocks)
         brs = split_breaks(breaks, ivs)
-        return solve_auto(lambda ns: self._solve(f, ns if self._multi else ns[0], total,
-                                                 breaks, check_residual, stacklevel + 3),
-                          len(ivs), [br.size > 0 for br in brs], tol, stacklevel)
+        one = self._explicit or not self._multi       # the paths that take one int n
+        return solve_auto(lambda ns: self._solve(f, ns[0] if one else ns, total, breaks,
+                                                 check_residual, stacklevel + 3),
+                          len(ivs), [br.size > 0 for br in brs], tol, stacklevel,
+                          n_max=FIXED_N_MAX if self._explicit else None)
 
     def _solve(self, f, n, total, breaks, check_residual, stacklevel):
         """:meth:`solve`, its warnings ``stacklevel`` frames above solve_blocks' caller."""

@@ -157,3 +157,32 @@ def test_residual_warning_of_the_returned_solution_is_kept(monkeypatch):
     cats = [w.category for w in caught]
     assert ResolutionWarning in cats
     assert cats.count(ResidualWarning) <= 1
+
+
+def test_explicit_end_exponent_takes_auto_up_to_its_own_limit():
+    """The edge crack (an explicit exponent 0 at the mouth, sie.fixed_ends, whose dense
+    collocation stops at n = 400): auto at tol = 1e-10 gives Koiter's F = 1.12152 and agrees
+    with n = 400 to 1e-10 (its convergence is algebraic, ~n^-4.5: the mouth's second
+    exponent 1.74 + 1.12i is not in the basis)."""
+    from sie.fixed_ends import _N_MAX
+
+    def edge_kernel(x, t):
+        u = t + x
+        return (-1.0 / u + 6.0 * x / u**2 - 4.0 * x**2 / u**3) / np.pi
+
+    def tip_factor(sol):
+        p = sol.pieces[0]
+        phi = sol.endpoint_value(1, 0)
+        return -math.sqrt(2.0 * p.interval.h) * 2.0 ** p.beta * phi
+
+    kw = dict(a=0.0, b=1.0, left=0.0, right="singular", intervals=[(0.0, 1.0)],
+              kernel=edge_kernel)
+    sol, caught = _no_warnings(lambda: sie.solve(lambda s: -np.ones_like(s), n="auto",
+                                                 tol=1e-10, **kw))
+    assert caught == [] and sol.n[0] < _N_MAX
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResidualWarning)
+        ref = sie.solve(lambda s: -np.ones_like(s), n=_N_MAX, **kw)
+    F = tip_factor(sol)
+    assert round(F, 5) == 1.12152
+    assert abs(F - tip_factor(ref)) <= 1e-10
