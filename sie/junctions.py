@@ -59,9 +59,9 @@ W the outer ends' weight, r = sum_{k<K} r_k P_k^{(alpha_d, beta_c)} with K = ``r
 (6) per junction and K more collocation points; its image is a_i W P_k + b_i H_L[W P_k], the
 principal value over the whole of L (:func:`sie.fixed_ends.hilbert_images` on [c, d]).  The
 pieces' series approximate W r algebraically well, so the columns are nearly dependent (a
-frame; condition 1e12-1e17): the system is solved in least squares, and the error settles
-at ~1e-10 (1e-6, 2e-9, 8e-11 at n = 8, 12, 16 against a manufactured psi with a regular
-part; 7e-11 at n = 24-48).  ``regular=0`` gives the plain collocation (square where
+frame; condition 1e12-1e17): the system is solved in least squares, oversampled (N_i
+more collocation points on each interval; the square frame system stalls at ~1e-10, the
+oversampled one reaches ~1e-13).  ``regular=0`` gives the plain collocation (square where
 kappa >= 0), geometric to rounding where psi has no regular part.
 
 Scope: without a kernel and without breaks.
@@ -95,6 +95,8 @@ from .solution import IntervalSolution
 from .special import jacobi_moment_shifted
 
 _REGULAR = 6   # terms of the regular part per junction (the default of solve_junctions)
+_OVER = 1.0     # with a regular part, N_i more collocation points per interval (the frame's
+#                 least squares oversampled: the junction's value 2e-9 -> 4e-14 at n = 32)
 
 __all__ = ["junction_exponent", "junction_ratio", "solve_junctions", "JunctionSolution"]
 
@@ -618,12 +620,14 @@ def solve_junctions(f, a, b, intervals, *, n, left, right, junctions, total=None
     exps = [_piece_exponents(a[i], b[i], lefts[i], rights[i], shares[i]) for i in range(J)]
     K = _check_regular(regular) * (J - 1)
     # the regular part's K coefficients: as many more collocation points, half of each
-    # junction's on either side of it
+    # junction's on either side of it, and N_i more on each interval (oversampled least
+    # squares, module docstring)
     extra = [0] * J
     for j in range(J - 1):
         extra[j] += (K // (J - 1) + 1) // 2
         extra[j + 1] += K // (J - 1) // 2
-    ms = [ni - k + x for ni, k, x in zip(ns, shares, extra)]
+    over = [int(_OVER * ni) if K else 0 for ni in ns]
+    ms = [ni - k + x + o for ni, k, x, o in zip(ns, shares, extra, over)]
     if min(ms) < 1:
         raise UnsupportedEquationError(
             f"n = {ns}: each interval needs more coefficients than its share of the index "
@@ -678,7 +682,9 @@ def _collocate(f, a, b, ivs, exps, ns, ms, reg, K, kappa, total, check_residual)
     else:
         # over-determined (kappa < 0), or the regular part's columns, which the pieces'
         # series approximate algebraically well: least squares
-        c, *_ = np.linalg.lstsq(matrix, rhs, rcond=None)
+        norms = np.linalg.norm(matrix, axis=0)
+        c, *_ = np.linalg.lstsq(matrix / norms, rhs, rcond=None)
+        c = c / norms
     if kappa < 0:
         consistency = float(np.sqrt(np.mean((Ac @ c - fc) ** 2)))
         if consistency > _CONSISTENCY_TOL * fscale:
