@@ -363,9 +363,9 @@ def _rows(i, dl, dr, ivs, exps, ns, a, b, q):
     return np.hstack(cols)
 
 
-def _regular_rows(i, s, dl, dr, ivs, reg: Exponents, K, a, b):
+def _regular_rows(i, dl, dr, ivs, reg: Exponents, K, a, b):
     """The images of the regular part's basis W P_k^{(alpha_d, beta_c)} on the whole of
-    L = [c, d] (k < K) at the points s of L_i (local distances dl, dr on L_i): a_i W P_k +
+    L = [c, d] (k < K) at the points of L_i (local distances dl, dr on L_i): a_i W P_k +
     b_i H_L[W P_k], the principal value over all of L (the regular part is smooth across the
     junctions)."""
     c, d = ivs[0].c, ivs[-1].d
@@ -429,6 +429,11 @@ def _check_total(total, kappa, J):
             raise SideConditionError(f"total must not be given: the index is {kappa} (the "
                                      "solution is unique or over-determined)")
         return None
+    if 2 <= kappa < J:
+        raise UnsupportedEquationError(
+            f"index {kappa} on {J} intervals: side conditions are available for index 1 "
+            f"(int_L psi = total) and index {J} (total = the {J} integrals over the "
+            "intervals)")
     if total is None:
         raise SideConditionError(
             f"total is required: the index is {kappa}" + (
@@ -662,7 +667,7 @@ def _collocate(f, a, b, ivs, exps, ns, ms, reg, K, kappa, total, check_residual)
         dl, dr, s = _points(iv, u)
         rows = _rows(i, dl, dr, ivs, exps, ns, a, b, q)
         if K:
-            rows = np.hstack([rows, _regular_rows(i, s, dl, dr, ivs, reg, K, a, b)])
+            rows = np.hstack([rows, _regular_rows(i, dl, dr, ivs, reg, K, a, b)])
         vals = call_checked(f, "f", (s,), s.shape)
         Ac.append(rows[:m])
         fc.append(vals[:m])

@@ -390,6 +390,8 @@ def test_manufactured_two_junctions():
     # mpmath values; the self-convergence of a generic f reaches 1e-14)
     assert errs[1] < 1e-2 * errs[0] and errs[-1] < 1e-8, errs
     assert sol.integral() == pytest.approx(tot, abs=1e-10)
+    # over one interval: the pieces' moments plus the regular part's share of it
+    assert sol.integral(1) == pytest.approx(integral(ends[1], ends[2]), abs=1e-9)
 
 
 # ---------------------------------------------------------------------------------------
@@ -492,6 +494,15 @@ def test_bad_choices(kw):
     args = dict(_GOOD, **kw)
     with pytest.raises(sie.InvalidEndConditionError):
         sie.solve_junctions(np.cos, [0.0, 1.0], [1.0, 1.0], _IV, **args)
+
+
+def test_index_without_side_conditions():
+    """Three intervals, z = a + i b = 1 + i, i, 1 + 3i (t = 1/4, 1/2, 0.398: one wrap), every
+    end singular: index 3 - 1 = 2 < J, for which no side conditions are defined."""
+    with pytest.raises(sie.UnsupportedEquationError, match="index 2 on 3 intervals"):
+        sie.solve_junctions(np.cos, [1.0, 0.0, 1.0], [1.0, 1.0, 3.0],
+                            [(-1.0, 0.0), (0.0, 1.0), (1.0, 2.0)], n=4, left="singular",
+                            right="singular", junctions=["singular", "singular"], total=1.0)
 
 
 def test_side_condition_errors():
