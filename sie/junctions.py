@@ -19,12 +19,12 @@ the leading terms of the equation on the two sides are
 
 a homogeneous pair with a nonzero solution iff (1/sin^2 = 1 + cot^2)
 
-    cot(pi gamma) = -(a_1 a_2 + b_1 b_2) / (a_2 b_1 - a_1 b_2)            (J-1)
+    cot(pi gamma) = -(a_1 a_2 + b_1 b_2) / (a_2 b_1 - a_1 b_2)            (JN)
 
 (:func:`junction_exponent`: gamma0 in (0, 1), the principal arccot as
 :func:`sie.sie_exponents`; "bounded" gamma = gamma0, "singular" gamma = gamma0 - 1), with
 the amplitude ratio A_2 / A_1 = (a_1 + b_1 cot(pi gamma)) sin(pi gamma) / b_1
-(:func:`junction_ratio`).  With z_i = a_i + i b_i = r_i exp(i pi t_i), (J-1) reads gamma =
+(:func:`junction_ratio`).  With z_i = a_i + i b_i = r_i exp(i pi t_i), (JN) reads gamma =
 t_2 - t_1 (mod 1), and an outer end's exponent is t_1 (mod 1) at c, -t_J (mod 1) at d: the
 sum of all the exponents telescopes to an integer, and the index is kappa = -(that sum), in
 [-J, J].  No jump (a_1 b_2 = a_2 b_1) leaves an integer exponent: no junction at all.
@@ -59,7 +59,7 @@ W the outer ends' weight, r = sum_{k<K} r_k P_k^{(alpha_d, beta_c)} with K = ``r
 (6) per junction and K more collocation points; its image is a_i W P_k + b_i H_L[W P_k], the
 principal value over the whole of L (:func:`sie.fixed_ends.hilbert_images` on [c, d]).  The
 pieces' series approximate W r algebraically well, so the columns are nearly dependent (a
-frame; condition 1e12-1e17): the system is solved in least squares, oversampled (N_i
+frame; condition 1e9-1e16): the system is solved in least squares, oversampled (N_i
 more collocation points on each interval; the square frame system stalls at ~1e-10, the
 oversampled one reaches ~1e-13).  ``regular=0`` gives the plain collocation (square where
 kappa >= 0), geometric to rounding where psi has no regular part.
