@@ -27,9 +27,9 @@ import math
 import numpy as np
 
 from .auto import check_tol, solve_auto
-from .errors import (CallableOutputError, InvalidCoefficientError, InvalidIntervalError,
-                     InvalidOrderError, PerIntervalArgumentError, SideConditionError,
-                     UnsupportedEquationError, real_array)
+from .errors import (CallableOutputError, InvalidCoefficientError, InvalidEndConditionError,
+                     InvalidIntervalError, InvalidOrderError, PerIntervalArgumentError,
+                     SideConditionError, UnsupportedEquationError, real_array)
 from .exponents import check_coefficients, check_end, exponents_of
 from .fixed_ends import _N_MAX as FIXED_N_MAX, explicit_exponents, is_explicit, solve_fixed
 from .block import Block
@@ -37,6 +37,7 @@ from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
 from .solver import block_functionals, solve_blocks
 from .systems import solve_system
+from .junctions import solve_junctions
 
 __all__ = ["Equation", "solve"]
 
@@ -591,6 +592,48 @@ def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol
     return solve_system(f, a, b, n=n, left=left, right=right, total=total, interval=interval)
 
 
+def _touching(intervals):
+    """Whether a list of intervals (c_i, d_i) has one that ends where the next begins."""
+    if intervals is None or isinstance(intervals, np.ndarray) and intervals.ndim != 2:
+        return False
+    try:
+        ivs = [tuple(iv) for iv in intervals]
+    except TypeError:
+        return False
+    return any(len(p) == 2 and len(q) == 2 and p[1] == q[0] for p, q in zip(ivs, ivs[1:]))
+
+
+def _solve_touching(f, a, b, n, left, right, kernel, total, breaks, intervals, tol,
+                    check_residual):
+    """:func:`solve` on intervals that touch: :func:`sie.junctions.solve_junctions`, the
+    choice at each junction being the right end's of the interval before it, which must be
+    the left end's of the one after it."""
+    ivs = [tuple(iv) for iv in intervals]
+    J = len(ivs)
+    for name, given in (("kernel", kernel is not None), ("breaks", bool(np.size(breaks))),
+                        ('n="auto"', isinstance(n, str) or tol is not None)):
+        if given:
+            raise UnsupportedEquationError(
+                f"intervals that touch (coefficients that jump) take no {name} yet")
+    if any(p[1] != q[0] for p, q in zip(ivs, ivs[1:])):
+        raise UnsupportedEquationError(
+            "intervals that touch and intervals with gaps between them in one equation are "
+            "not supported yet: solve the touching ones as one equation")
+    lefts, rights = (per_interval(name, v, J) for name, v in (("left", left), ("right", right)))
+    junctions = []
+    for i in range(J - 1):
+        if rights[i] != lefts[i + 1]:
+            raise InvalidEndConditionError(
+                f"at the junction x = {ivs[i][1]!r} the end choices of the two intervals "
+                f"must agree (one exponent on both sides): right[{i}] = {rights[i]!r}, "
+                f"left[{i + 1}] = {lefts[i + 1]!r}")
+        junctions.append(rights[i])
+    av = a if np.ndim(a) else [a] * J
+    bv = b if np.ndim(b) else [b] * J
+    return solve_junctions(f, av, bv, ivs, n=n, left=lefts[0], right=rights[-1],
+                           junctions=junctions, total=total, check_residual=check_residual)
+
+
 def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), intervals=None,
           check_residual=True, tol=None):
     """Solve a psi + (b/pi) PV int_L psi/(t-s) dt + int_L k(s,t) psi(t) dt = f(s) on L.
@@ -630,7 +673,10 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     breaks : sequence of float, optional
         Points strictly inside L where f or one of its derivatives jumps.
     intervals : sequence of (c, d), optional
-        L as disjoint ascending intervals; default the single interval [-1, 1].  With it,
+        L as disjoint ascending intervals; default the single interval [-1, 1].  Intervals
+        that touch (d_i = c_(i+1)) with coefficients that jump there are solved by
+        :func:`sie.solve_junctions` (the junction's exponent from both sides' a, b; its
+        choice is ``right[i]``, which must equal ``left[i+1]``; no kernel or breaks yet).  With it,
         the per-interval attributes of the :class:`Solution` are tuples.  A case axis
         (shape (B, 1, 2)) returns a :class:`sie.SolutionBatch` (:class:`sie.Equation`).
     check_residual : bool
@@ -713,6 +759,9 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     """
     if _is_matrix(a) or _is_matrix(b):
         return _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol)
+    if _touching(intervals):
+        return _solve_touching(f, a, b, n, left, right, kernel, total, breaks, intervals, tol,
+                               check_residual)
     eq = Equation(a=a, b=b, left=left, right=right, intervals=intervals, kernel=kernel)
     if isinstance(n, str) or tol is not None:
         return eq._solve_auto(f, n, total, breaks, check_residual, tol, stacklevel=4)

@@ -2,12 +2,15 @@
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
+
+import numpy as np
 
 from .errors import InvalidCoefficientError, InvalidEndConditionError, check_finite_real
 
 __all__ = ["Exponents", "sie_exponents", "exponents_of", "check_coefficients", "check_end",
-           "END_CHOICES", "MIN_B_OVER_A"]
+           "is_explicit", "check_explicit_exponent", "END_CHOICES", "MIN_B_OVER_A"]
 
 END_CHOICES = ("bounded", "singular")
 
@@ -142,6 +145,26 @@ def check_coefficients(a, b) -> tuple[float, float]:
     return a, b
 
 
+def is_explicit(v) -> bool:
+    """Whether an end condition is an explicit exponent (a real number, not text or a
+    bool) rather than "bounded" / "singular"."""
+    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+
+
+def check_explicit_exponent(name: str, v) -> float:
+    """``v`` as a float if it is a real number in (-1, 1), else InvalidEndConditionError."""
+    if not is_explicit(v):
+        raise InvalidEndConditionError(
+            f'{name} must be "bounded", "singular" or an exponent in (-1, 1) (a float), '
+            f"got {v!r}")
+    e = float(v)
+    if not (-1.0 < e < 1.0):
+        raise InvalidEndConditionError(
+            f"{name} = {e!r}: an explicit end exponent must lie in (-1, 1) (psi integrable, "
+            "not vanishing to first order)")
+    return e
+
+
 def check_end(name: str, v, explicit: bool = False):
     """``v`` if it is "bounded" or "singular"; with ``explicit``, also a real number in
     (-1, 1) (an explicit end exponent, returned as a float: :mod:`sie.fixed_ends`); else
@@ -149,7 +172,6 @@ def check_end(name: str, v, explicit: bool = False):
     if isinstance(v, str) and v in END_CHOICES:
         return v
     if explicit and not isinstance(v, (str, bytes)):
-        from .fixed_ends import check_explicit_exponent
         return check_explicit_exponent(name, v)
     # text: a misspelt end choice (an exponent is given as a number, not as text)
     raise InvalidEndConditionError(f'{name} must be "bounded" or "singular", got {v!r}')

@@ -25,7 +25,7 @@ H[w] in closed form (:func:`weight_hilbert`).  The kernel term is nearly singula
 to an explicit end: it is integrated by a rule graded geometrically toward that end on the
 scale of x's distance to it (:func:`graded_weight_rule`).
 
-The index rule (Muskhelishvili 1953, sec. 79, for the count of conditions): an explicit
+The index rule (Muskhelishvili 1953, the index and the count of conditions): an explicit
 exponent below 0 counts as singular, one at or above 0 as bounded; kappa = (number of
 singular ends) - 1.  kappa = 0: N collocation points (unique solution); kappa = 1: N - 1
 points and the side condition int psi = total; kappa = -1: N + 1 points solved in least
@@ -45,20 +45,18 @@ N. I. Muskhelishvili, Singular Integral Equations (1953).
 from __future__ import annotations
 
 import math
-import numbers
 import warnings
 from dataclasses import dataclass
 from types import SimpleNamespace
 
 import numpy as np
-from scipy.optimize import brentq
 from scipy.special import gamma, hyp2f1, rgamma
 
 from .assembly import probe_kernel
 from .errors import (InconsistentEquationWarning, InvalidEndConditionError, ResidualWarning,
                      SideConditionError, UnsupportedEquationError, call_checked,
                      check_finite_real, check_order)
-from .exponents import Exponents
+from .exponents import Exponents, check_explicit_exponent, is_explicit
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_vandermonde
 from .solution import IntervalSolution, Solution
@@ -79,26 +77,6 @@ _CONSISTENCY_TOL = 1e-8  # as sie.solver.CONSISTENCY_TOL
 # --------------------------------------------------------------------------
 # the end conditions
 # --------------------------------------------------------------------------
-def is_explicit(v) -> bool:
-    """Whether an end condition is an explicit exponent (a real number, not text or a
-    bool) rather than "bounded" / "singular"."""
-    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
-
-
-def check_explicit_exponent(name: str, v) -> float:
-    """``v`` as a float if it is a real number in (-1, 1), else InvalidEndConditionError."""
-    if not is_explicit(v):
-        raise InvalidEndConditionError(
-            f'{name} must be "bounded", "singular" or an exponent in (-1, 1) (a float), '
-            f"got {v!r}")
-    e = float(v)
-    if not (-1.0 < e < 1.0):
-        raise InvalidEndConditionError(
-            f"{name} = {e!r}: an explicit end exponent must lie in (-1, 1) (psi integrable, "
-            "not vanishing to first order)")
-    return e
-
-
 def index_of(left, right, alpha: float, beta: float) -> int:
     """kappa = (number of singular-like ends) - 1: an explicit exponent below 0 counts as
     singular, one at or above 0 as bounded; a named end counts as named."""
@@ -190,7 +168,11 @@ def end_exponent(symbol, bracket=(-0.99, 0.99), *, xtol=1e-15):
         raise InvalidEndConditionError(
             f"the symbol has no sign change on [{lo}, {hi}] (D = {flo:.3g}, {fhi:.3g}): give a "
             "bracket around the root")
-    return float(brentq(lambda g: float(symbol(g)), lo, hi, xtol=xtol, rtol=4.0 * np.finfo(float).eps))
+    # scipy.optimize imported here: a moving sweep never needs it (its import is the
+    # scene's start-up, tests/scene/test_cli.py)
+    from scipy.optimize import brentq
+    return float(brentq(lambda g: float(symbol(g)), lo, hi, xtol=xtol,
+                        rtol=4.0 * np.finfo(float).eps))
 
 
 # --------------------------------------------------------------------------
@@ -360,7 +342,31 @@ class FixedEndSolution(Solution):
     end) and ``condition`` as for any solution; psi at an end of exponent 0 is phi there.
     The Cauchy transform and the log potential raise :class:`UnsupportedEquationError`:
     their exact Jacobi recurrences (:mod:`sie.cauchy`) start from the transform of a
-    weight with alpha + beta an integer."""
+    weight with alpha + beta an integer.
+
+    Attributes
+    ----------
+    pieces, a, b, intervals, alpha, beta, kappa, n, coefficients, consistency
+        As for :class:`sie.Solution`; the exponent given at an end is its ``alpha`` or
+        ``beta``.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
+    equations", in Methods of Analysis and Solutions of Crack Problems, G. C. Sih (ed.),
+    Noordhoff (1973), ch. 7.
+
+    Examples
+    --------
+    A smooth kernel and the exponent 0.3 given at the left end (alpha from a = b = 1 at the
+    right, singular there):
+
+    >>> import numpy as np, sie
+    >>> sol = sie.solve(np.cos, a=1.0, b=1.0, n=12, left=0.3, right="singular",
+    ...                 kernel=lambda s, t: 0.1 * s * t)
+    >>> type(sol).__name__, sol.beta, sol.alpha
+    ('FixedEndSolution', 0.3, -0.25)
+    """
 
     def __call__(self, s):
         out = super().__call__(s)

@@ -4,8 +4,8 @@
 
 on L = L_1 U ... U L_J, L_i = [c_i, d_i] with d_i = c_{i+1} (the intervals touch), the
 Cauchy integral over the whole of L.  At a junction e = d_i = c_{i+1} the coefficients jump
-and psi has a power singularity of its own (Muskhelishvili 1953, secs. 78-80: the
-Riemann-Hilbert problem with discontinuous coefficients): psi ~ A_1 (e - t)^gamma for t < e
+and psi has a power singularity of its own (Muskhelishvili 1953, the Riemann-Hilbert problem
+with discontinuous coefficients): psi ~ A_1 (e - t)^gamma for t < e
 and A_2 (t - e)^gamma for t > e, one exponent on both sides.  With the standard integrals
 
     (1/pi) PV int_0^inf u^g/(u - x) du = -cot(pi g) x^g,
@@ -68,7 +68,7 @@ Scope: without a kernel and without breaks.
 
 References
 ----------
-N. I. Muskhelishvili, Singular Integral Equations (1953), secs. 78-80 (discontinuous
+N. I. Muskhelishvili, Singular Integral Equations (1953) (discontinuous
 coefficients; the exponents at the points of discontinuity and the index).  F. Erdogan, G.
 D. Gupta and T. S. Cook, "Numerical solution of singular integral equations", in Methods of
 Analysis and Solutions of Crack Problems, G. C. Sih (ed.), Noordhoff (1973), ch. 7.
@@ -82,7 +82,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import (InconsistentEquationWarning, InvalidCoefficientError,
-                     InvalidEndConditionError, InvalidIntervalError, InvalidOrderError, PerIntervalArgumentError,
+                     InvalidEndConditionError, InvalidIntervalError, InvalidOrderError,
+                     PerIntervalArgumentError,
                      ResidualWarning, SideConditionError, UnsupportedEquationError,
                      call_checked, check_finite_real, check_order, describe_value, is_number)
 from .exponents import Exponents, check_coefficients, check_end, exponents_of
@@ -128,7 +129,8 @@ def junction_exponent(a1, b1, a2, b2) -> float:
     """gamma0 in (0, 1) of a junction where (a, b) jumps from (a_1, b_1) to (a_2, b_2).
 
     psi ~ A_1 (e - t)^gamma (t < e), A_2 (t - e)^gamma (t > e) is a local solution of the
-    homogeneous equation iff (Muskhelishvili 1953, secs. 78-80; the module docstring)
+    homogeneous equation iff (Muskhelishvili 1953, discontinuous coefficients; the module
+    docstring)
 
         cot(pi gamma) = -(a_1 a_2 + b_1 b_2) / (a_2 b_1 - a_1 b_2);
 
@@ -149,6 +151,12 @@ def junction_exponent(a1, b1, a2, b2) -> float:
     ------
     InvalidCoefficientError
         A coefficient not finite, b_i = 0, or (a_1, b_1) proportional to (a_2, b_2).
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953) (the
+    Riemann-Hilbert problem with discontinuous coefficients: the exponent at a point where
+    the coefficient jumps).
 
     Examples
     --------
@@ -531,7 +539,8 @@ def solve_junctions(f, a, b, intervals, *, n, left, right, junctions, total=None
 
     The exponent at each junction from :func:`junction_exponent` and the choice there, the
     index from the sum of all the exponents, the general collocation of the module
-    docstring (Muskhelishvili 1953, secs. 78-80; Erdogan, Gupta & Cook 1973, ch. 7).
+    docstring (Muskhelishvili 1953, discontinuous coefficients; Erdogan, Gupta & Cook 1973,
+    ch. 7).
 
     Parameters
     ----------
@@ -583,6 +592,12 @@ def solve_junctions(f, a, b, intervals, *, n, left, right, junctions, total=None
         kappa < 0 and the least-squares residual above 1e-8 max abs(f).
     ResidualWarning
         The equation's residual between the collocation points above 1e-6 (relative).
+
+    References
+    ----------
+    N. I. Muskhelishvili, Singular Integral Equations, Noordhoff (1953) (discontinuous
+    coefficients) and ch. 10 (the index); F. Erdogan, G. D. Gupta and T. S. Cook (1973),
+    ch. 7 (the Gauss-Jacobi collocation).
 
     Examples
     --------

@@ -8,14 +8,20 @@ References independent of the solver:
   amplitude ratio sigma_2 / sigma_1 from the local analysis, W the outer ends' weight, g and
   r smooth across the junction), f from psi by mpmath's principal value over the whole of
   L at Chebyshev points of each interval, its Chebyshev coefficients checked to decay (f is
-  smooth on each closed interval), the interpolant as f;
+  smooth on each closed interval), the interpolant as f.  The mpmath values (f at the
+  Chebyshev points, psi at the test points, the integrals) are stored in
+  tests/reference/junction_refs.json, keyed by the case and the point (they take ~40 s);
+  SIE_TEST_RECOMPUTE_REFS=1 computes them again and rewrites the file;
 - self-convergence for a generic f, and the limit of a vanishing jump against sie.solve on
   the one interval.
 """
 from __future__ import annotations
 
+import json
 import math
+import os
 import warnings
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
@@ -26,6 +32,30 @@ from numpy.polynomial import chebyshev as cheb
 
 import sie
 from sie.junctions import _cross_images, junction_ratio
+
+
+_REFS_PATH = Path(__file__).resolve().parent.parent / "reference" / "junction_refs.json"
+_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
+_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
+_NEW = {}
+
+
+def _stored(key, compute):
+    """The stored mpmath value of ``key``, or compute() (a float) kept for the file."""
+    if key in _REFS:
+        return _REFS[key]
+    value = float(compute())
+    _REFS[key] = _NEW[key] = value
+    return value
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _write_new_references():
+    """Values computed in this run (a new case, or SIE_TEST_RECOMPUTE_REFS=1) are written
+    back to the file at the end of the module."""
+    yield
+    if _NEW:
+        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
 
 
 @pytest.fixture(autouse=True)
@@ -199,11 +229,13 @@ def _segment(F, p0, p1, singular):
     return total
 
 
-def _manufactured(a, b, ends, left, mid, right, g, r):
+def _manufactured(a, b, ends, left, mid, right, g, r, label):
     """psi = W (sigma_i prod_j abs(t - e_j)^gamma_j g(t) + r(t)) on the intervals between
     ``ends`` = (c, e_1, ..., d) (``mid``: one choice or one per junction; sigma_1 = 1,
     sigma_(i+1) = sigma_i junction_ratio at e_i), and f from it (an interpolant of the mpmath
-    values on each interval, after checking that they are smooth)."""
+    values on each interval, after checking that they are smooth).  ``label`` names g and r
+    in the keys of the stored values."""
+    case = repr((a, b, ends, left, mid, right, label))
     J = len(ends) - 1
     mids = [mid] * (J - 1) if isinstance(mid, str) else list(mid)
     pts = [mp.mpf(v) for v in ends]
@@ -250,8 +282,10 @@ def _manufactured(a, b, ends, left, mid, right, g, r):
     fits = []
     xs = np.cos(np.pi * (np.arange(_M) + 0.5) / _M)
     for lo, hi in zip(ends[:-1], ends[1:]):
-        vals = [float(f_mp(mp.mpf(lo) + (mp.mpf(hi) - lo) * (mp.mpf(float(u)) + 1) / 2))
-                for u in xs]
+        vals = [_stored(f"{case} f {lo!r} {hi!r} {k}",
+                        lambda u=u: f_mp(mp.mpf(lo) + (mp.mpf(hi) - lo) * (mp.mpf(float(u)) + 1)
+                                         / 2))
+                for k, u in enumerate(xs)]
         co = cheb.chebfit(xs, vals, _M - 1)
         # f smooth on the closed interval: the tail of its Chebyshev series is at rounding
         assert np.max(np.abs(co[-6:])) < 1e-12 * max(1.0, np.max(np.abs(co)))
@@ -266,12 +300,14 @@ def _manufactured(a, b, ends, left, mid, right, g, r):
         return out
 
     def psi_np(s):
-        return np.array([float(psi(mp.mpf(float(v)))) for v in s])
+        return np.array([_stored(f"{case} psi {float(v)!r}", lambda v=v: psi(mp.mpf(float(v))))
+                         for v in s])
 
     def integral(lo, hi):
         """int_lo^hi psi, lo < hi among the ends."""
         sel = [p for p in pts if mp.mpf(lo) <= p <= mp.mpf(hi)]
-        return float(sum(_segment(psi, p0, p1, singular) for p0, p1 in zip(sel[:-1], sel[1:])))
+        return _stored(f"{case} int {lo!r} {hi!r}", lambda: sum(
+            _segment(psi, p0, p1, singular) for p0, p1 in zip(sel[:-1], sel[1:])))
 
     return f, psi_np, integral, (gammas[0] if len(gammas) == 1 else tuple(gammas))
 
@@ -286,7 +322,7 @@ def kappa0_case():
     index 0; g = exp(t/2), r = cos(t) (a regular part: psi(e) = r(e) W(e) != 0)."""
     mp.mp.dps = 20
     return _manufactured((0.0, 1.0), (1.0, 2.0), _ENDS, "singular", "bounded", "singular",
-                         lambda t: mp.exp(t / 2), lambda t: mp.cos(t))
+                         lambda t: mp.exp(t / 2), lambda t: mp.cos(t), "exp(t/2), cos(t)")
 
 
 def test_manufactured_index_0_with_a_regular_part(kappa0_case):
@@ -327,7 +363,7 @@ def test_manufactured_power_part_only_plain_basis():
     a, b = (1.0, 0.0), (1.0, 1.0)
     f, psi_np, integral, gamma = _manufactured(a, b, _ENDS, "singular", "singular",
                                                "singular", lambda t: 1 + t / 3 - t**2 / 5,
-                                               lambda t: 0)
+                                               lambda t: 0, "1 + t/3 - t^2/5, 0")
     tot = [integral(_ENDS[0], _ENDS[1]), integral(_ENDS[1], _ENDS[2])]
     exact = psi_np(_S)
     errs = []
@@ -351,7 +387,7 @@ def test_manufactured_index_1_and_minus_1():
                                     ("bounded", "bounded", "bounded", -2)):
         f, psi_np, integral, gamma = _manufactured(a, b, _ENDS, left, mid, right,
                                                    lambda t: mp.exp(-t / 3),
-                                                   lambda t: 1 + t / 4)
+                                                   lambda t: 1 + t / 4, "exp(-t/3), 1 + t/4")
         tot = integral(_ENDS[0], _ENDS[2]) if kappa == 1 else None
         with warnings.catch_warnings():
             warnings.simplefilter("error", sie.InconsistentEquationWarning)
@@ -374,7 +410,8 @@ def test_manufactured_two_junctions():
     ends = (-1.0, -0.2, 0.7, 2.0)
     f, psi_np, integral, gammas = _manufactured(a, b, ends, "singular",
                                                 ["bounded", "singular"], "singular",
-                                                lambda t: 1 + t / 5, lambda t: mp.cos(t))
+                                                lambda t: 1 + t / 5, lambda t: mp.cos(t),
+                                                "1 + t/5, cos(t)")
     tot = integral(ends[0], ends[-1])
     s = np.array([-0.9, -0.3, -0.21, -0.19, 0.0, 0.69, 0.71, 1.5])
     exact = psi_np(s)
@@ -511,3 +548,35 @@ def test_side_condition_errors():
                             right="singular", junctions=["singular"])
     with pytest.raises(sie.SideConditionError, match="must not"):
         sie.solve_junctions(np.cos, [0.0, 1.0], [1.0, 1.0], _IV, total=1.0, **_GOOD)
+
+
+# ---------------------------------------------------------------------------------------
+# through sie.solve: intervals that touch
+# ---------------------------------------------------------------------------------------
+def test_solve_on_touching_intervals_is_solve_junctions():
+    """sie.solve with intervals that touch and per-interval a, b: the junction's choice is
+    right[i] = left[i + 1]; the same numbers as sie.solve_junctions."""
+    ivs = [(-1.0, 0.5), (0.5, 2.0)]
+    ref = sie.solve_junctions(np.cos, [0.0, 1.0], [1.0, 2.0], ivs, n=16, left="singular",
+                              right="singular", junctions=["bounded"])
+    got = sie.solve(np.cos, a=[0.0, 1.0], b=[1.0, 2.0], n=16, left=["singular", "bounded"],
+                    right=["bounded", "singular"], intervals=ivs)
+    s = np.array([-0.5, 0.3, 0.6, 1.5])
+    assert np.array_equal(got(s), ref(s)) and got.gamma == ref.gamma
+
+
+@pytest.mark.parametrize("kw,error,match", [
+    (dict(left="singular", right=["bounded", "singular"]), sie.InvalidEndConditionError,
+     r"junction x = 0.5 .* right\[0\] = 'bounded', left\[1\] = 'singular'"),
+    (dict(a=0.0, b=1.0), sie.InvalidCoefficientError, "nothing jumps"),
+    (dict(intervals=[(-1.0, 0.5), (0.5, 2.0), (3.0, 4.0)], a=[0.0, 1.0, 0.0],
+          b=[1.0, 2.0, 1.0]), sie.UnsupportedEquationError, "gaps between them"),
+    (dict(kernel=lambda s, t: s * t), sie.UnsupportedEquationError, "no kernel"),
+    (dict(n="auto"), sie.UnsupportedEquationError, 'no n="auto"'),
+])
+def test_solve_on_touching_intervals_refuses(kw, error, match):
+    args = dict(a=[0.0, 1.0], b=[1.0, 2.0], n=8, left="singular", right="singular",
+                intervals=[(-1.0, 0.5), (0.5, 2.0)], total=0.0)
+    args.update(kw)
+    with pytest.raises(error, match=match):
+        sie.solve(np.cos, **args)
