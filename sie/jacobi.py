@@ -54,19 +54,19 @@ def _vandermonde_into(a, b, x, V):
 
 def _parameter(a):
     """A Jacobi parameter as the kernel takes it: float, or complex when it has an
-    imaginary part."""
-    a = complex(a)
-    return a if a.imag else a.real
+    imaginary part (a real one stays on the float kernel, the common and faster case)."""
+    if isinstance(a, complex):            # numpy's complex types too
+        return complex(a) if a.imag else float(a.real)
+    return float(a)
 
 
 def _vandermonde(n, a, b, x):
     """:func:`_vandermonde_into` into a new matrix (complex when a or b is)."""
     a, b = _parameter(a), _parameter(b)
-    cplx = isinstance(a, complex) or isinstance(b, complex)
-    V = np.empty((x.shape[0], n), dtype=complex if cplx else float)
-    if cplx:
-        a, b = complex(a), complex(b)
-    return _vandermonde_into(a, b, x, V)
+    if type(a) is float and type(b) is float:
+        return _vandermonde_into(a, b, x, np.empty((x.shape[0], n)))
+    return _vandermonde_into(complex(a), complex(b), x,
+                             np.empty((x.shape[0], n), dtype=complex))
 
 
 @jit()
@@ -165,8 +165,8 @@ def jacobi_series(c, a, b, x):
     [-0.125, 1.0]
     """
     x = np.asarray(x, dtype=float)
-    cplx = np.iscomplexobj(c) or isinstance(_parameter(a), complex) \
-        or isinstance(_parameter(b), complex)
+    cplx = np.iscomplexobj(c) or type(_parameter(a)) is complex \
+        or type(_parameter(b)) is complex
     c = np.ascontiguousarray(c, dtype=complex) if cplx else _f64(c)
     xf = _f64(x.ravel())
     out = np.zeros(xf.size, dtype=c.dtype)

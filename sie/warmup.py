@@ -16,7 +16,8 @@ def warm_up() -> None:
     """Exercise each compiled kernel once: Gauss-Jacobi on every rung of its ladder (large
     exponents included), solve for every index, with a kernel, with breaks and on two
     intervals, Cauchy transforms at real and complex points, the log potential (with breaks
-    too), and a case axis of one-interval equations (:class:`sie.Equation`)."""
+    too), a system with complex modes, and a case axis of one-interval equations
+    (:class:`sie.Equation`)."""
     from .equation import Equation, solve
     from .gaussjacobi import gauss_jacobi
     for n in (1, 30, 300):
@@ -44,6 +45,13 @@ def warm_up() -> None:
               breaks=(0.9999,)).cauchy(np.array([0.2 + 1e-3j]))
         solve(f, a=0.7, b=1.0, n=12, left="singular", right="bounded",
               intervals=[(-1.0, -0.2), (0.1, 1.0)])
+        # a system with a conjugate pair of modes: the complex Jacobi kernel, the transform
+        # off the interval by both of its routes
+        from .systems import solve_system
+        sys_sol = solve_system(lambda s: np.array([np.cos(s), np.sin(s)]),
+                               np.array([[0.0, -0.3], [0.3, 0.0]]), np.eye(2), n=8,
+                               left="singular", right="bounded")
+        sys_sol.cauchy(np.array([0.3 + 1e-3j, 3.0 + 0j]))
         eqs = Equation(a=[0.7, -0.3], b=1.0, left="bounded", right="bounded",
                        intervals=[[(-1.0, 1.0)], [(0.0, 2.0)]])
         eqs.functionals(f, n=5)
