@@ -567,9 +567,11 @@ def _case_total(total, eq):
 
 def _is_matrix(v):
     """An m x m coefficient (a system), as opposed to one per interval or per case."""
-    return isinstance(v, np.ndarray) and v.ndim == 2 or \
-        isinstance(v, (list, tuple)) and len(v) > 0 and all(
-            isinstance(r, (list, tuple, np.ndarray)) and np.ndim(r) == 1 for r in v)
+    if isinstance(v, np.ndarray):
+        return v.ndim == 2 and v.shape[0] == v.shape[1]
+    return isinstance(v, (list, tuple)) and len(v) > 0 and all(
+        isinstance(r, (list, tuple, np.ndarray)) and np.ndim(r) == 1 and len(r) == len(v)
+        for r in v)
 
 
 def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol):

@@ -33,6 +33,7 @@ are printed as ``[sie-breaks-transforms]`` lines (run with -s).
 from __future__ import annotations
 
 import functools
+import os
 import warnings
 
 import numpy as np
@@ -353,8 +354,14 @@ def _remainder_part(sol, z):
     return out
 
 
-@pytest.mark.parametrize("where", ["far", "near"])
-@pytest.mark.parametrize("name", PROB_IDS, ids=PROB_IDS)
+#: (problem, where) of test_cauchy_complex: every problem far from L; next to L (each case
+#: 3-6 s against its mpmath reference) the two with a kernel, and every one with
+#: SIE_TEST_FULL_SWEEPS=1
+CAUCHY_CASES = [(name, where) for name in PROB_IDS for where in ("far", "near")
+                if where == "far" or "kernel" in name or os.environ.get("SIE_TEST_FULL_SWEEPS")]
+
+
+@pytest.mark.parametrize("name,where", CAUCHY_CASES)
 @pytest.mark.slow
 def test_cauchy_complex(name, where):
     """C(z) against the tanh-sinh reference, to 1e-13 S(z): far (|z| up to ~20, above, below,

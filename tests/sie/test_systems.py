@@ -367,7 +367,8 @@ def _quad_cauchy(density, z, a):
         return complex(mp.quad(lambda t: density(t) / (t - z), sorted(pts)) / mp.pi)
 
 
-@pytest.mark.parametrize("beta_d,points", [(0.3, Z_OFF), (-0.15, Z_OFF[[1, 4, 6]])])
+@pytest.mark.parametrize("beta_d,points", [(0.3, Z_OFF[[0, 2, 4, 6]]),
+                                           (-0.15, Z_OFF[[1, 3, 5, 7]])])
 def test_interface_crack_cauchy_transform_off_the_crack(beta_d, points):
     """psi_1 + i psi_2 = G cosh(pi eps)(x + 2 i eps a)(a - x)^(-1/2 + i eps)(a + x)^(-1/2 - i eps)
     (Rice & Sih 1965): the Cauchy transform of each component at complex z, and of b at real
