@@ -58,7 +58,7 @@ from .errors import (InconsistentEquationWarning, InvalidEndConditionError, Resi
                      check_finite_real, check_order)
 from .exponents import Exponents, check_explicit_exponent, is_explicit
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_vandermonde
+from .jacobi import jacobi_vandermonde, recurrence_coefficients
 from .solution import IntervalSolution, Solution
 from .special import jacobi_moment_shifted
 
@@ -227,17 +227,12 @@ def _divided_sums(n, alpha, beta, x, t, omega):
     if n < 2:
         return S
     T = t[None, :]
-    abp2 = alpha + beta + 2.0
+    A, B, C = recurrence_coefficients(alpha, beta, n - 1)
     q_prev = np.zeros((x.size, t.size))
-    q = np.full((x.size, t.size), 0.5 * abp2)          # Q_1: the slope of P_1
+    q = np.full((x.size, t.size), 0.5 * ((alpha + 1.0) + (beta + 1.0)))   # Q_1: P_1's slope
     S[:, 1] = q @ omega
     for k in range(1, n - 1):
-        s = 2.0 * (k - 1) + abp2
-        d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
-        A = (s + 1.0) * (s + 2.0) * s / d
-        B = (s + 1.0) * (alpha * alpha - beta * beta) / d
-        C = 2.0 * (k + alpha) * (k + beta) * (s + 2.0) / d
-        q_prev, q = q, (A * T + B) * q + A * P[:, k:k + 1] - C * q_prev
+        q_prev, q = q, (A[k - 1] * T + B[k - 1]) * q + A[k - 1] * P[:, k:k + 1] - C[k - 1] * q_prev
         S[:, k + 1] = q @ omega
     return S
 

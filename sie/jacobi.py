@@ -14,7 +14,7 @@ from ._jit import jit
 from .special import _jacobi_norm
 
 __all__ = ["jacobi_series", "jacobi_vandermonde", "jacobi_project", "jacobi_norms",
-           "jacobi_norms_cached", "plateau_start"]
+           "jacobi_norms_cached", "plateau_start", "recurrence_coefficients"]
 
 
 @jit()
@@ -50,6 +50,19 @@ def _vandermonde_into(a, b, x, V):
             for i in range(m):
                 V[i, k + 1] = (A * x[i] + B) * V[i, k] - C * V[i, k - 1]
     return V
+
+
+def recurrence_coefficients(a, b, J):
+    """A_k, B_k, C_k (arrays, k = 1..J-1) of P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1}, DLMF
+    18.9.1-2, as :func:`_vandermonde_into` forms them (a + b + 2 as (a + 1) + (b + 1)); real
+    or complex a, b: for the recurrences outside the kernel (divided differences, functions
+    of the second kind)."""
+    k = np.arange(1, J, dtype=float)
+    abp2 = (a + 1.0) + (b + 1.0)
+    s = 2.0 * (k - 1) + abp2
+    d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
+    return ((s + 1.0) * (s + 2.0) * s / d, (s + 1.0) * (a * a - b * b) / d,
+            2.0 * (k + a) * (k + b) * (s + 2.0) / d)
 
 
 def _parameter(a):

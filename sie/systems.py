@@ -123,7 +123,8 @@ from .errors import (CallableOutputError, EvaluationPointError, InconsistentEqua
                      check_finite_real, check_order, is_number)
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import _vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde
+from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde,
+                     recurrence_coefficients)
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
            "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off"]
@@ -553,17 +554,6 @@ def _f0(e: ModeExponents, mu0, z):
     return out
 
 
-def _recurrence_coefficients(a, b, J):
-    """A_k, B_k, C_k, k = 1..J-1, of P_{k+1} = (A_k x + B_k) P_k - C_k P_{k-1} (DLMF
-    18.9.1-2, as sie.jacobi's kernel), complex a, b."""
-    k = np.arange(1, J, dtype=float)
-    abp2 = (a + 1.0) + (b + 1.0)
-    s = 2.0 * (k - 1) + abp2
-    d = 2.0 * (k + 1) * ((k - 1) + abp2) * s
-    return ((s + 1.0) * (s + 2.0) * s / d, (s + 1.0) * (a * a - b * b) / d,
-            2.0 * (k + a) * (k + b) * (s + 2.0) / d)
-
-
 def mode_cauchy_off(e: ModeExponents, mu0, c, z):
     """(1/pi) int_{-1}^{1} w(t) sum_j c_j P_j^{(alpha,beta)}(t) / (t - z) dt at z off [-1, 1]
     (complex, or real with abs(z) > 1), for real or complex exponents.
@@ -604,7 +594,7 @@ def mode_cauchy_off(e: ModeExponents, mu0, c, z):
     if far.any():
         zf = z[far]
         J = N + int(np.ceil(_MILLER_LOG / float(log_rho[far].min()))) + 1
-        A, B, C = _recurrence_coefficients(e.alpha, e.beta, J)
+        A, B, C = recurrence_coefficients(e.alpha, e.beta, J)
         f_next = np.zeros(zf.shape, dtype=complex)          # f_{k+1}
         f_k = np.full(zf.shape, 1e-200 + 0j)                # f_k, k = J - 1
         acc = np.zeros(zf.shape, dtype=complex)
