@@ -53,18 +53,19 @@ import numpy as np
 from scipy.special import gamma, hyp2f1, rgamma
 
 from .assembly import probe_kernel
-from .errors import (InconsistentEquationWarning, InvalidEndConditionError, ResidualWarning,
+from .errors import (EvaluationPointError, InconsistentEquationWarning,
+                     InvalidEndConditionError, ResidualWarning,
                      SideConditionError, UnsupportedEquationError, call_checked,
                      check_finite_real, check_order)
 from .exponents import Exponents, check_explicit_exponent, is_explicit
 from .gaussjacobi import gauss_jacobi_cached
-from .jacobi import jacobi_vandermonde, recurrence_coefficients
+from .jacobi import jacobi_series, jacobi_vandermonde, recurrence_coefficients
 from .solution import IntervalSolution, Solution
 from .special import jacobi_moment_shifted
 
 __all__ = ["end_exponent", "is_explicit", "check_explicit_exponent", "explicit_exponents",
            "weight_hilbert", "hilbert_images", "graded_weight_rule", "solve_fixed",
-           "FixedEndSolution"]
+           "FixedEndSolution", "weight_cauchy", "series_cauchy", "series_log_potential"]
 
 _RATIO = 4.0            # growth of the graded pieces away from an explicit end
 _Q_MIN = 24             # Gauss nodes per piece of the graded rule, at least
@@ -178,6 +179,10 @@ def end_exponent(symbol, bracket=(-0.99, 0.99), *, xtol=1e-15):
 # --------------------------------------------------------------------------
 # the finite Hilbert transform of the weight and of the basis
 # --------------------------------------------------------------------------
+_NEAR_INTEGER = 0.05    # weight_hilbert: an end's form avoided with its exponent this near an
+#                         integer (and nearer one than the other end's)
+
+
 def _dist_to_integer(e):
     return abs(e - round(e))
 
@@ -192,16 +197,38 @@ def weight_hilbert(x, alpha: float, beta: float):
         H[w](x) = cot(pi alpha) w(x) - 2^{alpha+beta} Gamma(alpha) Gamma(beta+1)
                   / (pi Gamma(alpha+beta+1)) 2F1(1, -alpha-beta; 1-alpha; (1-x)/2),
 
-    and with the ends exchanged (x -> -x, H -> -H) when beta is the farther from an
-    integer (alpha = 0 is such a case: the cotangent and Gamma(alpha) are infinite).  With
+    and with the ends exchanged (x -> -x, H -> -H): at each x the form of the nearer end
+    (its 2F1's argument is small), unless that end's exponent is within 0.05 of an integer
+    and nearer one than the other's (alpha = 0: the cotangent and Gamma(alpha) are
+    infinite).  With
     alpha = beta = 0, w = 1: H[1](x) = (1/pi) log((1-x)/(1+x)).
     """
     x = np.asarray(x, dtype=float)
+    return _weight_hilbert_dist(1.0 - x, 1.0 + x, alpha, beta)
+
+
+def _weight_hilbert_dist(one_minus, one_plus, alpha, beta):
+    """:func:`weight_hilbert` from the distances 1 - x and 1 + x (formed from the real
+    coordinate next to an end)."""
+    one_minus = np.asarray(one_minus, dtype=float)
+    one_plus = np.asarray(one_plus, dtype=float)
     if alpha == 0.0 and beta == 0.0:
-        return np.log((1.0 - x) / (1.0 + x)) / math.pi
-    if _dist_to_integer(alpha) >= _dist_to_integer(beta):
-        return _weight_hilbert_right(1.0 - x, 1.0 + x, alpha, beta)
-    return -_weight_hilbert_right(1.0 + x, 1.0 - x, beta, alpha)
+        return np.log(one_minus / one_plus) / math.pi
+    da, db = _dist_to_integer(alpha), _dist_to_integer(beta)
+    # the nearer end's form (its series' argument, the distance / 2, is small: the far
+    # end's at 1e-6 from an end keeps ~1e-11), unless its exponent is within 0.05 of an
+    # integer and nearer one than the other end's (the cotangent and Gamma(alpha) blow up)
+    right_ok = da >= min(_NEAR_INTEGER, db)
+    left_ok = db >= min(_NEAR_INTEGER, da)
+    use_right = np.where(one_minus <= one_plus, right_ok, not left_ok)
+    out = np.empty(np.broadcast(one_minus, one_plus).shape)
+    if np.any(use_right):
+        out[use_right] = _weight_hilbert_right(one_minus[use_right], one_plus[use_right],
+                                               alpha, beta)
+    if np.any(~use_right):
+        out[~use_right] = -_weight_hilbert_right(one_plus[~use_right], one_minus[~use_right],
+                                                 beta, alpha)
+    return out
 
 
 def _weight_hilbert_right(one_minus, one_plus, alpha, beta):
@@ -328,6 +355,177 @@ def kernel_term(kernel, x_dist, interval, n, alpha, beta, graded_left, graded_ri
 
 
 # --------------------------------------------------------------------------
+# the transforms of a solution: Cauchy transform and log potential, any exponents
+# --------------------------------------------------------------------------
+_Q_TRANSFORM = 28       # Gauss nodes per piece of the transforms' graded rules
+
+
+def _graded_pieces(p, delta):
+    """Pieces of [-1, 1] graded geometrically, ratio 4, toward the point at distance p in
+    [0, 2] from -1, on the scale delta > 0: [p - delta, p + delta], then p -+ delta 4^j out
+    to the ends, as offsets from that point (exact: a node next to it keeps its distance
+    to it, which the integrand 1/(t - z) with Im z = 1e-9 needs to ~1e-25).  A break is
+    kept only where the end beyond it is at least half the half-width of the piece it
+    bounds away (else that piece reaches the end and takes the end's factor of the weight
+    by Gauss-Jacobi), so that every piece sees the point z (distance delta from p) and any
+    end it does not touch at a Bernstein-ellipse parameter of 2 or more (2.08 at worst:
+    2.08^(-2q) < 1e-17 with q = 28 nodes).  Returns the offsets of the edges, the first
+    -p (the left end), the last 2 - p (the right end)."""
+    lefts, rights = [], []
+    h, j = delta, 0
+    while True:
+        o = delta * 4.0 ** j
+        if p - o <= 0.0 or p - o < 0.5 * h:
+            break
+        lefts.append(-o)
+        h, j = 1.5 * o, j + 1
+    h, j = delta, 0
+    while True:
+        o = delta * 4.0 ** j
+        if (2.0 - p) - o <= 0.0 or (2.0 - p) - o < 0.5 * h:
+            break
+        rights.append(o)
+        h, j = 1.5 * o, j + 1
+    return [-p] + lefts[::-1] + rights + [2.0 - p]
+
+
+def _graded_rule_at(p, delta, q, alpha, beta):
+    """Nodes and weights of int_{-1}^{1} g(v) w(v) dv for g nearly singular at a point at
+    distance delta from the point of [-1, 1] whose distance to -1 is p: the pieces of
+    :func:`_graded_pieces`, Gauss-Jacobi of an end's factor on a piece that touches it
+    (:func:`_piece`; both factors on the whole of [-1, 1]), Gauss-Legendre times w
+    elsewhere.  Returns 1 + v, 1 - v (each from the piece's own end), v - (p - 1) (the
+    offset from the point, exact next to it) and the weights."""
+    edges = _graded_pieces(p, delta)
+    dls, drs, offs, wts = [], [], [], []
+    y, om = (np.asarray(a) for a in gauss_jacobi_cached(q, 0.0, 0.0))
+    for k, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+        first, last = k == 0, k == len(edges) - 2
+        if first and last:
+            x, w = gauss_jacobi_cached(q, alpha, beta)
+            x = np.asarray(x)
+            dl, dr, wt = 1.0 + x, 1.0 - x, np.asarray(w)
+            off = dl - p
+        elif last:
+            dr, dl, wt = _piece(0.0, hi - lo, q, alpha, beta)
+            off = hi - dr
+        elif first:
+            dl, dr, wt = _piece(0.0, hi - lo, q, beta, alpha)
+            off = lo + dl
+        else:
+            h = 0.5 * (hi - lo)
+            off = lo + h * (1.0 + y)
+            dl = p + off
+            dr = 2.0 - dl
+            wt = om * h * dl ** beta * dr ** alpha
+        dls.append(dl)
+        drs.append(dr)
+        offs.append(off)
+        wts.append(wt)
+    return np.concatenate(dls), np.concatenate(drs), np.concatenate(offs), np.concatenate(wts)
+
+
+def weight_cauchy(zm1, zp1, alpha: float, beta: float):
+    """F_0(z) = (1/pi) int_{-1}^{1} w(t)/(t - z) dt, w = (1-t)^alpha (1+t)^beta, at z off
+    [-1, 1] (complex, or real outside), for any alpha, beta in (-1, 2): alpha + beta need
+    not be an integer.
+
+    ``zm1``, ``zp1``: z - 1 and z + 1 (formed from the real coordinate next to an end).  At
+    abs(z) >= 2 the moments' series (:func:`sie.systems.f0_far`); nearer, a rule graded
+    geometrically toward the point of [-1, 1] nearest to z on the scale of z's distance to
+    it (:func:`_graded_rule_at`), in the frame of the nearer end (F_0(z; alpha, beta) =
+    -F_0(-z; beta, alpha)), t - z formed from the distances to that end.  No closed form:
+    with alpha + beta not an integer the weight's transform is a hypergeometric function
+    whose forms at the ends degenerate where an exponent is 0 (the edge crack's mouth)."""
+    from types import SimpleNamespace as _NS
+    from .systems import f0_far
+    zm1 = np.asarray(zm1, dtype=complex).ravel()
+    zp1 = np.asarray(zp1, dtype=complex).ravel()
+    z = 0.5 * (zm1 + zp1)
+    out = np.empty(z.shape, dtype=complex)
+    mu0 = jacobi_moment_shifted(1.0 + alpha, 1.0 + beta)
+    far = np.abs(z) >= 2.0
+    if far.any():
+        out[far] = f0_far(_NS(alpha=alpha, beta=beta), mu0, z[far])
+    for i in np.flatnonzero(~far):
+        if z[i].real <= 0.0:
+            zl, a, b, sign = zp1[i], alpha, beta, 1.0
+        else:
+            zl, a, b, sign = -zm1[i], beta, alpha, -1.0
+        p = min(max(zl.real, 0.0), 2.0)
+        _, _, off, wt = _graded_rule_at(p, abs(zl - p), _Q_TRANSFORM, a, b)
+        out[i] = sign * np.sum(wt / (off - (zl - p))) / math.pi
+    return out
+
+
+def _series_pv(c, alpha, beta, v, vm1, vp1):
+    """H[w sum c_k P_k](v) at real v in (-1, 1): :func:`hilbert_images` summed, H[w] from
+    the distances 1 - v = -vm1, 1 + v = vp1."""
+    n = c.size
+    t, omega = gauss_jacobi_cached(max(n, 1), alpha, beta)
+    S = _divided_sums(n, alpha, beta, v, np.asarray(t), np.asarray(omega))
+    P = jacobi_vandermonde(n, alpha, beta, v)
+    return (S @ c) / math.pi + (P @ c) * _weight_hilbert_dist(-vm1, vp1, alpha, beta)
+
+
+def series_cauchy(c, alpha: float, beta: float, v, ends, cplx: bool):
+    """(1/pi) int_{-1}^{1} w(u) sum_k c_k P_k^{(alpha,beta)}(u) / (u - v) du for any real
+    alpha, beta > -1: the principal value at real v inside (:func:`hilbert_images`, exact),
+    elsewhere the functions of the second kind (:func:`sie.systems.mode_cauchy_off`:
+    forward from F_0 next to the interval, backward (Miller) away from it), F_0 by
+    :func:`weight_cauchy`.  ``ends`` = (v - 1, v + 1) from the real coordinate; real v
+    outside gives the real transform; ``cplx``: v complex (never on (-1, 1))."""
+    from types import SimpleNamespace as _NS
+    from .systems import mode_cauchy_off
+    c = np.asarray(c, dtype=float)
+    vm1, vp1 = (np.asarray(e) for e in ends)
+    out = np.zeros(v.shape, dtype=complex if cplx else float)
+    inside = np.zeros(v.shape, dtype=bool) if cplx else (vm1 < 0.0) & (vp1 > 0.0)
+    if inside.any():
+        out[inside] = _series_pv(c, alpha, beta, v[inside].real, vm1[inside].real,
+                                 vp1[inside].real)
+    off = ~inside
+    if off.any():
+        zo = np.asarray(v[off], dtype=complex)
+        f0 = weight_cauchy(vm1[off], vp1[off], alpha, beta)
+        mu0 = jacobi_moment_shifted(1.0 + alpha, 1.0 + beta)
+        val = mode_cauchy_off(_NS(alpha=alpha, beta=beta), mu0, c, zo, f0=f0)
+        out[off] = val if cplx else val.real
+    return out
+
+
+def series_log_potential(c, alpha: float, beta: float, vm1, vp1):
+    """(1/pi) int_{-1}^{1} w(u) sum_k c_k P_k^{(alpha,beta)}(u) log abs(v - u) du at real v
+    (anywhere; finite at the ends), given v - 1 and v + 1 from the real coordinate: the
+    rule of :func:`_graded_rule_at` in the frame of the nearer end (the series mirrored,
+    c_k -> (-1)^k c_k, alpha <-> beta, for v > 0), graded toward v on the scale of its
+    distance to [-1, 1], or on v's own rounding scale where v lies on it (the log
+    singularity: the piece [v - d, v + d] left to Gauss-Legendre, d ~ 8 eps (1 + v)),
+    max(28, n/2 + 20) nodes a piece (phi is a polynomial of degree n - 1)."""
+    c = np.asarray(c, dtype=float)
+    vm1 = np.asarray(vm1, dtype=float).ravel()
+    vp1 = np.asarray(vp1, dtype=float).ravel()
+    q = max(_Q_TRANSFORM, c.size // 2 + 20)
+    q += q % 2               # even: no node at the centre of [v - d, v + d], v itself
+    mirrored = c * (-1.0) ** np.arange(c.size)
+    out = np.empty(vm1.shape)
+    for i in range(vm1.size):
+        if vp1[i] <= -vm1[i]:                       # v <= 0: the left end's frame
+            vl, a, b, cc = vp1[i], alpha, beta, c
+        else:
+            vl, a, b, cc = -vm1[i], beta, alpha, mirrored
+        p = min(max(vl, 0.0), 2.0)
+        delta = abs(vl - p)
+        if delta == 0.0:
+            delta = 8.0 * np.finfo(float).eps * max(p, 1e-8)
+        dl, dr, off, wt = _graded_rule_at(p, delta, q, a, b)
+        u = np.where(dl <= dr, dl - 1.0, 1.0 - dr)
+        phi = jacobi_series(cc, a, b, u)
+        out[i] = np.sum(wt * phi * np.log(np.abs(off - (vl - p)))) / math.pi
+    return out
+
+
+# --------------------------------------------------------------------------
 # the solver
 # --------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
@@ -335,9 +533,12 @@ class FixedEndSolution(Solution):
     """A :class:`sie.Solution` of an interval with an explicit end exponent: psi, phi,
     the weight, ``integral``, ``kernel_integral``, ``endpoint_value`` (the series at the
     end) and ``condition`` as for any solution; psi at an end of exponent 0 is phi there.
-    The Cauchy transform and the log potential raise :class:`UnsupportedEquationError`:
-    their exact Jacobi recurrences (:mod:`sie.cauchy`) start from the transform of a
-    weight with alpha + beta an integer.
+    The Cauchy transform (:meth:`cauchy`), its one-sided limits on L (:meth:`cauchy_limit`)
+    and the log potential (:meth:`log_potential`) for any exponents: the principal value
+    by the divided differences of the basis plus P_k H[w] (:func:`hilbert_images`), off L
+    the functions of the second kind from F_0 by a graded rule (:func:`series_cauchy`,
+    :func:`weight_cauchy`), the log potential by a graded rule (:func:`series_log_potential`)
+    (the closed forms of :mod:`sie.cauchy` need alpha + beta an integer).
 
     Attributes
     ----------
@@ -373,13 +574,156 @@ class FixedEndSolution(Solution):
                     out = np.where(at, p.phi_local(np.array([u]))[0], out)
         return out
 
-    def _unsupported(self, *args, **kwargs):
-        raise UnsupportedEquationError(
-            "the Cauchy transform and the log potential of a solution with an explicit end "
-            "exponent (alpha + beta not an integer) are not available: the exact Jacobi "
-            "recurrences of sie.cauchy need alpha + beta an integer")
+    def _transform_pieces(self):
+        """The parts psi is the sum of (a junction solution adds its regular part)."""
+        return self.pieces
 
-    cauchy = cauchy_limit = log_potential = _unsupported
+    def cauchy(self, z):
+        """(1/pi) int_L psi(t)/(t - z) dt: complex z off L, real z outside L (real), and the
+        principal value at real z inside an interval (real).
+
+        Each part w phi (any exponents, alpha + beta not an integer): inside, the divided
+        differences of the basis plus P_k(x) H[w](x) (:func:`hilbert_images`, exact); off
+        the interval the Jacobi functions of the second kind (:func:`series_cauchy`:
+        :func:`sie.systems.mode_cauchy_off` from F_0 by :func:`weight_cauchy`, a rule graded
+        toward z, so that points 1e-12 from L or from an end keep their accuracy).
+
+        Parameters
+        ----------
+        z : array_like of float or complex
+            Not at an end of an interval; a complex z not on L (Im z != 0 there).
+
+        Returns
+        -------
+        ndarray of float (real z) or complex, the shape of ``z``.
+
+        Raises
+        ------
+        EvaluationPointError
+            z at an end, a complex z with Im z == 0 on L, non-finite z.
+
+        References
+        ----------
+        F. Erdogan, G. D. Gupta and T. S. Cook (1973), ch. 7 (the splitting of H[w P_k]);
+        W. Gautschi, SIAM Rev. 9 (1967) 24 (the minimal solution by backward recurrence).
+
+        Examples
+        --------
+        psi = (1 + t)^0.3 (phi = 1; left=0.3, right=0.0 and f = H[w]): far away the
+        transform is -(1/pi) int psi / z to O(z^-2):
+
+        >>> import numpy as np, sie
+        >>> from sie.fixed_ends import weight_hilbert
+        >>> sol = sie.solve(lambda s: weight_hilbert(s, 0.0, 0.3), a=0.0, b=1.0, n=4,
+        ...                 left=0.3, right=0.0)
+        >>> z = 1e8
+        >>> bool(abs(sol.cauchy(z) * z * np.pi + sol.integral()) < 1e-6)
+        True
+        """
+        from .cauchy import evaluation_points
+        z, cplx = evaluation_points(z, self.intervals, "z")
+        flat = z.ravel()
+        out = np.zeros(flat.shape, dtype=complex if cplx else float)
+        for p in self._transform_pieces():
+            iv = p.interval
+            out += series_cauchy(p.coefficients, p.alpha, p.beta, iv.local(flat),
+                                 iv.local_ends(flat), cplx)
+        return out.reshape(z.shape)
+
+    def cauchy_limit(self, x, side=1):
+        """C(x + i0 side), C(z) = (1/pi) int_L psi(t)/(t - z) dt, at real x: on L the
+        principal value plus side i psi(x) (Plemelj), off L the real transform.
+
+        Parameters
+        ----------
+        x : array_like of float
+            Real points, not at an end of an interval.
+        side : {1, -1}
+            The limit from above (+1) or from below (-1).
+
+        Returns
+        -------
+        ndarray of complex, the shape of ``x``.
+
+        Raises
+        ------
+        EvaluationPointError
+            x complex, not finite or at an end; ``side`` not +1 or -1.
+
+        References
+        ----------
+        N. I. Muskhelishvili, Singular Integral Equations (1953), sec. 17 (the Plemelj
+        formulas).
+
+        Examples
+        --------
+        >>> import numpy as np, sie
+        >>> from sie.fixed_ends import weight_hilbert
+        >>> sol = sie.solve(lambda s: weight_hilbert(s, 0.0, 0.3), a=0.0, b=1.0, n=4,
+        ...                 left=0.3, right=0.0)
+        >>> F = sol.cauchy_limit(np.array([0.5]))
+        >>> bool(abs(F.imag[0] - 1.5 ** 0.3) < 1e-12)      # psi = (1 + x)^0.3
+        True
+        """
+        from .cauchy import evaluation_points
+        if isinstance(side, bool) or side not in (1, -1):
+            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
+                                       f"got {side!r}")
+        if np.asarray(x).dtype.kind == "c":
+            raise EvaluationPointError("x must be real (the limits are taken on the real "
+                                       "line; use cauchy() at complex points); got complex")
+        x, _ = evaluation_points(x, self.intervals, "x")
+        return self.cauchy(x) + 1j * side * self(x)
+
+    def log_potential(self, x):
+        """V(x) = (1/pi) int_L psi(t) log abs(x - t) dt at real x (any x; finite at the
+        ends); dV/dx = -H[psi](x).
+
+        Per part, with t = m + h u: h [(log h / pi) int w phi du + (1/pi) int w phi log
+        abs(v - u) du], v = (x - m)/h, the last by a Gauss rule graded toward v and toward the
+        ends (:func:`series_log_potential`; no closed form for alpha + beta not an
+        integer).
+
+        Parameters
+        ----------
+        x : array_like of float
+
+        Returns
+        -------
+        ndarray of float, the shape of ``x``.
+
+        Raises
+        ------
+        EvaluationPointError
+            complex or non-finite x.
+
+        References
+        ----------
+        F. Erdogan, G. D. Gupta and T. S. Cook (1973), ch. 7; N. I. Muskhelishvili, Singular
+        Integral Equations (1953) (the logarithmic potential of a density on arcs).
+
+        Examples
+        --------
+        psi = (1 + t)^0.3: far away V(x) = (1/pi) int psi log x + O(1/x):
+
+        >>> import numpy as np, sie
+        >>> from sie.fixed_ends import weight_hilbert
+        >>> sol = sie.solve(lambda s: weight_hilbert(s, 0.0, 0.3), a=0.0, b=1.0, n=4,
+        ...                 left=0.3, right=0.0)
+        >>> x = 1e9
+        >>> bool(abs(sol.log_potential(x) - sol.integral() * np.log(x) / np.pi) < 1e-8)
+        True
+        """
+        x = self._real_points(x, "x")
+        flat = x.ravel()
+        out = np.zeros(flat.shape)
+        for p in self._transform_pieces():
+            iv = p.interval
+            mu0 = jacobi_moment_shifted(p.exp.alpha_p1, p.exp.beta_p1)
+            vm1, vp1 = iv.local_ends(flat)
+            out += iv.h * (math.log(iv.h) / math.pi * mu0 * p.coefficients[0]
+                           + series_log_potential(p.coefficients, p.alpha, p.beta, vm1, vp1))
+        return out.reshape(x.shape)
 
 
 def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=False,

@@ -466,8 +466,10 @@ class JunctionSolution(FixedEndSolution):
     (``regular``, an IntervalSolution on [c, d], or None); ``sol(s)`` evaluates their sum on
     L (a singular junction itself raises :class:`sie.EvaluationPointError`), ``integral``
     and ``kernel_integral`` include the regular part; ``phi``, ``weight`` and
-    ``endpoint_value`` are the pieces' own (psi = w_i phi_i + W r); the Cauchy transform and
-    the log potential are unavailable, as for :class:`sie.FixedEndSolution`.
+    ``endpoint_value`` are the pieces' own (psi = w_i phi_i + W r); ``cauchy``,
+    ``cauchy_limit`` and ``log_potential`` are those of :class:`sie.FixedEndSolution`,
+    summed over the pieces and the regular part (a junction is an end of two pieces: the
+    transform is not evaluated there, the log potential is).
 
     Attributes
     ----------
@@ -522,6 +524,11 @@ class JunctionSolution(FixedEndSolution):
         flat = np.ascontiguousarray(s.ravel(), dtype=float)
         extra = r.kernel_local(kernel, flat, 2 * r.n + 32 if nodes is None else int(nodes))
         return out + extra.reshape(s.shape)
+
+    def _transform_pieces(self):
+        """The pieces and the regular part: the Cauchy transform, its limits and the log
+        potential sum over them (:class:`sie.FixedEndSolution`)."""
+        return self.pieces if self.regular is None else self.pieces + (self.regular,)
 
     gamma = property(lambda self: self.gammas, doc="The exponent at each junction.")
     kappa = property(lambda self: self.index, doc="The index, -(sum of all the exponents).")

@@ -533,6 +533,19 @@ def _weight_moments(e: ModeExponents, mu0, K):
     return mu
 
 
+def f0_far(e, mu0, z):
+    """F_0(z) = (1/pi) int w/(t - z) dt at abs(z) >= 2 (_F0_SERIES) from the weight's
+    moments, -(1/pi) sum_{k<60} mu_k z^{-k-1} (2^-60 of the first term left out), for any
+    exponents alpha, beta > -1 (``e`` needs only ``alpha`` and ``beta``; alpha + beta need
+    not be an integer: the moments' recurrence holds for any)."""
+    mu = _weight_moments(e, mu0, _F0_TERMS)
+    zi = 1.0 / z
+    acc = np.zeros(zi.shape, dtype=complex)
+    for k in range(_F0_TERMS - 1, -1, -1):              # Horner in 1/z
+        acc = acc * zi + mu[k]
+    return -acc * zi / np.pi
+
+
 def _f0(e: ModeExponents, mu0, z):
     """F_0(z) = (1/pi) int w/(t - z) dt: the closed form (Omega(z) - 2^{-kappa}
     P_{-kappa}^{(-alpha,-beta)}(z)) / sin(pi alpha) below abs(z) = _F0_SERIES (it cancels
@@ -540,12 +553,7 @@ def _f0(e: ModeExponents, mu0, z):
     out = np.empty(z.shape, dtype=complex)
     far = np.abs(z) >= _F0_SERIES
     if far.any():
-        mu = _weight_moments(e, mu0, _F0_TERMS)
-        zi = 1.0 / z[far]
-        acc = np.zeros(zi.shape, dtype=complex)
-        for k in range(_F0_TERMS - 1, -1, -1):          # Horner in 1/z
-            acc = acc * zi + mu[k]
-        out[far] = -acc * zi / np.pi
+        out[far] = f0_far(e, mu0, z[far])
     near = ~far
     if near.any():
         zn = z[near]
@@ -554,9 +562,16 @@ def _f0(e: ModeExponents, mu0, z):
     return out
 
 
-def mode_cauchy_off(e: ModeExponents, mu0, c, z):
+def mode_cauchy_off(e: ModeExponents, mu0, c, z, f0=None):
     """(1/pi) int_{-1}^{1} w(t) sum_j c_j P_j^{(alpha,beta)}(t) / (t - z) dt at z off [-1, 1]
     (complex, or real with abs(z) > 1), for real or complex exponents.
+
+    ``f0``: None for a mode (alpha + beta = -kappa an integer: the closed forms below);
+    otherwise F_0 = (1/pi) int w/(t - z) dt at the points z (an array of their shape), for
+    any real exponents (alpha + beta not an integer: :mod:`sie.fixed_ends`, whose ``e``
+    needs only ``alpha`` and ``beta``).  Then the near points run the recurrence forward
+    from F_0 and F_1 = P_1(z) F_0 + A_0 mu_0 / pi (stable there: a rounding error grows at
+    most like rho^N < 33), and the backward recurrence is normalised by the given F_0.
 
     Near the interval (N log(rho) < 3.5, rho the Bernstein parameter of z, N = len(c)): the
     closed form (Omega(z) Phi(z)) / sin(pi alpha) + sum img_j P_j^{(-alpha,-beta)}(z) (the
@@ -575,10 +590,14 @@ def mode_cauchy_off(e: ModeExponents, mu0, c, z):
     rho = np.abs(z + np.sqrt(z - 1.0) * np.sqrt(z + 1.0))
     log_rho = np.log(np.maximum(rho, 1.0 + 1e-300))
     near = N * log_rho < _NEAR_LOG
-    if near.any():
+    if f0 is not None:
+        f0 = np.asarray(f0, dtype=complex).ravel()
+    if near.any() and f0 is None:
         zn = z[near]
         out[near] = (_omega(e, zn) * _series_at(c, e.alpha, e.beta, zn) / e.sin
                      + _series_at(_moment_images(e, c), -e.alpha, -e.beta, zn))
+    elif near.any():
+        out[near] = _forward_sum(e, mu0, c, z[near], f0[near])
     huge = np.abs(z) > _HUGE
     if huge.any():
         # -(1/pi)(M_0/z + M_1/z^2), M_k = int w Phi t^k: the rest is below z^-2 ~ 1e-200
@@ -609,8 +628,26 @@ def mode_cauchy_off(e: ModeExponents, mu0, c, z):
                 f_next[big] *= 1e-100
                 acc[big] *= 1e-100
         acc += c[0] * f_k                                    # f_k is now f_0
-        out[far] = acc * (_f0(e, mu0, zf) / f_k)
+        out[far] = acc * ((_f0(e, mu0, zf) if f0 is None else f0[far]) / f_k)
     return out
+
+
+def _forward_sum(e, mu0, c, z, F0):
+    """sum_j c_j F_j(z) by the recurrence run forward from F_0 (given) and F_1 = P_1(z) F_0
+    + A_0 mu_0 / pi (P_1(t) - P_1(z) = A_0 (t - z), int w (t - z)/(t - z) = mu_0)."""
+    N = c.size
+    a0 = 0.5 * ((e.alpha + 1.0) + (e.beta + 1.0))
+    acc = c[0] * F0
+    if N == 1:
+        return acc
+    f_prev = F0
+    f_k = ((e.alpha + 1.0) + a0 * (z - 1.0)) * F0 + a0 * mu0 / np.pi
+    acc = acc + c[1] * f_k
+    A, B, C = recurrence_coefficients(e.alpha, e.beta, N - 1)
+    for k in range(1, N - 1):
+        f_prev, f_k = f_k, (A[k - 1] * z + B[k - 1]) * f_k - C[k - 1] * f_prev
+        acc = acc + c[k + 1] * f_k
+    return acc
 
 
 # --------------------------------------------------------------------------
