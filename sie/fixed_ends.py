@@ -65,7 +65,7 @@ from .special import jacobi_moment_shifted
 
 __all__ = ["end_exponent", "is_explicit", "check_explicit_exponent", "explicit_exponents",
            "weight_hilbert", "hilbert_images", "graded_weight_rule", "solve_fixed",
-           "FixedEndSolution", "weight_cauchy", "series_cauchy", "series_log_potential"]
+           "FixedEndSolution"]
 
 _RATIO = 4.0            # growth of the graded pieces away from an explicit end
 _Q_MIN = 24             # Gauss nodes per piece of the graded rule, at least
