@@ -39,7 +39,7 @@ from .solver import N_MAX as _N_MAX
 from .solver import Functionals
 from .block import Block
 from .equation import Equation, solve
-from .fixed_ends import FixedEndSolution, end_exponent
+from .fixed_ends import FixedEndSolution, end_exponent, end_exponents
 from .junctions import junction_exponent, solve_junctions
 from .special import jacobi_moment
 from .systems import (ModeExponents, SystemModes, SystemSolution, mode_exponents,
@@ -59,7 +59,7 @@ __all__ = [
     "gauss_jacobi", "sie_exponents", "Exponents", "jacobi_cauchy", "N_MAX",
     "jacobi_series", "jacobi_norms", "jacobi_moment",
     "solve_system", "system_modes", "mode_exponents", "SystemSolution", "SystemModes",
-    "ModeExponents", "end_exponent", "FixedEndSolution",
+    "ModeExponents", "end_exponent", "end_exponents", "FixedEndSolution",
     "solve_junctions", "junction_exponent",
     "SIEInputError", "InvalidOrderError", "InvalidExponentError", "InvalidCoefficientError",
     "InvalidEndConditionError", "SideConditionError", "CallableOutputError",

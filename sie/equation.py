@@ -31,7 +31,8 @@ from .errors import (CallableOutputError, InvalidCoefficientError, InvalidEndCon
                      InvalidIntervalError, InvalidOrderError, PerIntervalArgumentError,
                      SideConditionError, UnsupportedEquationError, real_array)
 from .exponents import check_coefficients, check_end, exponents_of
-from .fixed_ends import _N_MAX as FIXED_N_MAX, explicit_exponents, is_explicit, solve_fixed
+from .fixed_ends import (_N_MAX as FIXED_N_MAX, check_further, explicit_exponents, is_explicit,
+                         solve_fixed)
 from .block import Block
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
@@ -148,7 +149,7 @@ class Equation:
     """
 
     __slots__ = ("_blocks", "cases", "intervals", "a", "b", "kappa", "_multi", "_ends",
-                 "_exps", "_prepared")
+                 "_exps", "_prepared", "_further")
 
     def __init__(self, *, a, b, left, right, intervals=None, kernel=None):
         iv = None if intervals is None else _as_interval_array(intervals)
@@ -159,6 +160,13 @@ class Equation:
         J = len(ivs)
         A = [check_coefficients(ai, bi) for ai, bi in
              zip(per_interval("a", a, J), per_interval("b", b, J))]
+        # (e0, g1, ...) at one interval: an explicit exponent and further ones
+        further = [(), ()]
+        if J == 1:
+            if _is_expansion(left):
+                left, further[0] = check_further("left", left)
+            if _is_expansion(right):
+                right, further[1] = check_further("right", right)
         lefts = [check_end("left", v, True) for v in per_interval("left", left, J)]
         rights = [check_end("right", v, True) for v in per_interval("right", right, J)]
         kernels = _kernels(kernel, J)
@@ -170,12 +178,15 @@ class Equation:
         exps = explicit_exponents if explicit else exponents_of
         blocks = tuple(Block(iv_j, aj, bj, l, r, exps(aj, bj, l, r), k)
                        for iv_j, (aj, bj), l, r, k in zip(ivs, A, lefts, rights, kernels))
-        self._set(blocks, intervals is not None)
+        self._set(blocks, intervals is not None, tuple(further))
 
-    def _set(self, blocks, multi):
-        """One equation (no case axis) of the given blocks."""
+    def _set(self, blocks, multi, further=((), ())):
+        """One equation (no case axis) of the given blocks; ``further``: the further
+        exponents at the left and the right end of a one-interval explicit-exponent
+        equation (:func:`sie.fixed_ends.check_further`)."""
         s = object.__setattr__
         s(self, "_blocks", blocks)
+        s(self, "_further", further)
         s(self, "cases", None)
         s(self, "_multi", multi)
         s(self, "intervals", np.array([(b.interval.c, b.interval.d) for b in blocks]))
@@ -199,7 +210,8 @@ class Equation:
             raise InvalidCoefficientError("a case axis must hold at least one equation, got none")
         _check_case_intervals(iv)
         A, Bv = _case_coefficients(a, b, B)
-        if is_explicit(left) or is_explicit(right):
+        if is_explicit(left) or is_explicit(right) or _is_expansion(left) or \
+                _is_expansion(right):
             raise UnsupportedEquationError(
                 "a case axis takes the end choices \"bounded\" / \"singular\"; an explicit end "
                 "exponent is available for one equation (solve the cases one by one)")
@@ -223,6 +235,7 @@ class Equation:
         s(self, "_ends", ((left, right),))
         s(self, "_exps", exps)
         s(self, "_prepared", {} if prepared is None else prepared)
+        s(self, "_further", ((), ()))
 
     @property
     def blocks(self) -> tuple:
@@ -277,7 +290,7 @@ class Equation:
                                            f"(as the equation's blocks), got {len(ivs)}")
         blocks = tuple(Block(iv, b.a, b.b, b.left, b.right, b.exponents, b.kernel)
                        for iv, b in zip(ivs, self.blocks))
-        out._set(blocks, True)
+        out._set(blocks, True, self._further)
         return out
 
     def take(self, indices) -> "Equation":
@@ -385,7 +398,7 @@ class Equation:
             return self._rules(n).solve(f, self.intervals[:, 0, :], _case_total(total, self))
         if self._explicit:
             return solve_fixed(self.blocks[0], f, n, total, breaks, check_residual,
-                               self._multi, stacklevel)
+                               self._multi, stacklevel, self._further)
         return solve_blocks(self.blocks, f, n, total, breaks, check_residual, self._multi,
                             stacklevel)
 
@@ -458,6 +471,13 @@ class Equation:
                 rules = CaseRules(self.a, self.b, n, l, r, self._exps)
             self._prepared[int(n) if isinstance(n, (int, np.integer)) else n] = rules
         return rules
+
+
+def _is_expansion(v) -> bool:
+    """Whether an end condition is given as (e0, g1, ...): a tuple of two or more entries
+    whose first is a real number (an explicit exponent and further ones; a one-interval
+    equation: a per-interval sequence there has one entry)."""
+    return isinstance(v, tuple) and len(v) >= 2 and is_explicit(v[0])
 
 
 @functools.lru_cache(maxsize=64)

@@ -44,7 +44,9 @@ N. I. Muskhelishvili, Singular Integral Equations (1953).
 """
 from __future__ import annotations
 
+import cmath
 import math
+import numbers
 import warnings
 from dataclasses import dataclass
 from types import SimpleNamespace
@@ -63,7 +65,7 @@ from .jacobi import jacobi_series, jacobi_vandermonde, recurrence_coefficients
 from .solution import IntervalSolution, Solution
 from .special import jacobi_moment_shifted
 
-__all__ = ["end_exponent", "is_explicit", "check_explicit_exponent", "explicit_exponents",
+__all__ = ["end_exponent", "end_exponents", "is_explicit", "check_explicit_exponent", "explicit_exponents",
            "weight_hilbert", "hilbert_images", "graded_weight_rule", "solve_fixed",
            "FixedEndSolution"]
 
@@ -174,6 +176,161 @@ def end_exponent(symbol, bracket=(-0.99, 0.99), *, xtol=1e-15):
     from scipy.optimize import brentq
     return float(brentq(lambda g: float(symbol(g)), lo, hi, xtol=xtol,
                         rtol=4.0 * np.finfo(float).eps))
+
+
+_WINDING_STEP = 0.02     # the argument principle's first sampling of the box's edges
+
+
+def _winding(symbol, corners, max_depth=40):
+    """The number of zeros of ``symbol`` inside the polygon ``corners`` (counter-clockwise),
+    by the argument principle: its argument's change along the edges, sampled every 0.02
+    and halved until the argument turns by less than pi/4 between neighbouring points (a
+    symbol like cos(pi g) turns by pi per unit of Re g)."""
+    total = 0.0
+    for p, q in zip(corners, corners[1:] + corners[:1]):
+        k = max(1, math.ceil(abs(q - p) / _WINDING_STEP))
+        pts = [p + (q - p) * j / k for j in range(k + 1)]
+        vals = [complex(symbol(z)) for z in pts]
+        stack = [(pts[j], pts[j + 1], vals[j], vals[j + 1], 0) for j in range(k)]
+        while stack:
+            a, b, fa, fb, depth = stack.pop()
+            if not (np.isfinite(fa) and np.isfinite(fb)) or fa == 0 or fb == 0:
+                raise InvalidEndConditionError(
+                    f"the symbol is zero or not finite on the search box's boundary near "
+                    f"{a:.6g}: change above= or box=")
+            turn = cmath.phase(fb / fa)
+            if abs(turn) > math.pi / 4 and depth < max_depth:
+                m = 0.5 * (a + b)
+                fm = complex(symbol(m))
+                stack.append((m, b, fm, fb, depth + 1))
+                stack.append((a, m, fa, fm, depth + 1))
+            else:
+                total += turn
+    return int(round(total / (2.0 * math.pi)))
+
+
+def _newton(symbol, g, tol, iters=60):
+    """A root of ``symbol`` near g by Newton's method, the derivative by central
+    differences; None if it does not converge."""
+    for _ in range(iters):
+        fg = complex(symbol(g))
+        h = 1e-6 * (1.0 + abs(g))
+        df = (complex(symbol(g + h)) - complex(symbol(g - h))) / (2.0 * h)
+        if not (np.isfinite(fg) and np.isfinite(df)) or df == 0:
+            return None
+        step = fg / df
+        g = g - step
+        if abs(step) <= tol * (1.0 + abs(g)):
+            return g
+        if abs(g) > 1e6:
+            return None
+    return None
+
+
+def end_exponents(symbol, count=1, *, above=0.0, box=(12.0, 6.0), tol=1e-14):
+    """The further exponents of psi at an end with a fixed singularity: the roots g of the
+    kernel's Mellin symbol D(g) with Re g > ``above``, the ``count`` with the smallest real
+    parts, complex ones with Im g > 0 (their conjugates are roots too).
+
+    Near an end where the kernel is homogeneous of degree -1 in the distances to it, psi
+    = sum_j c_j d^{g_j} over the roots of D (Erdogan, Gupta & Cook 1973, sec. 7.3; d the
+    distance to the end): the root in (-1, 1), :func:`end_exponent`, is the leading
+    exponent, the next roots (the edge crack's are complex) the terms the Jacobi basis
+    does not carry.  Pass them as ``left=(e0, g1, ...)`` / ``right=(e0, g1, ...)`` to
+    :func:`sie.solve`: the basis then carries them and the solution converges faster.
+
+    The roots are found by Newton's method (the derivative by central differences) from a
+    grid of starting points (spacing 1/4) in the box ``above`` < Re g < ``above`` + box[0],
+    0 <= Im g < box[1]; their number is checked against the argument principle on the box
+    ``above`` + 1e-6 < Re g < ``above`` + box[0], abs(Im g) < box[1] (the symbol real on the
+    real axis: roots in conjugate pairs).
+
+    Parameters
+    ----------
+    symbol : callable
+        D(g) for complex g (write it with :mod:`cmath` or numpy, not :mod:`math`), analytic
+        in the box, real for real g.
+    count : int
+        How many roots (>= 1).
+    above : float
+        Only roots with real part above it (the leading exponent).
+    box : (float, float)
+        The search box's width in Re g (from ``above``) and height in Im g.
+    tol : float
+        Relative tolerance of Newton's steps.
+
+    Returns
+    -------
+    tuple of complex
+        The roots, by increasing real part (a real root with Im 0).
+
+    Raises
+    ------
+    InvalidEndConditionError
+        count not a positive integer, a bad box, fewer than ``count`` roots in the box, the
+        roots found fewer than the argument principle counts, or a symbol not finite or
+        zero on the box's boundary.
+
+    References
+    ----------
+    F. Erdogan, G. D. Gupta and T. S. Cook (1973), sec. 7.3 (the characteristic equation of
+    generalised Cauchy kernels); W. T. Koiter, J. Appl. Mech. 32 (1965) 237 (the edge
+    crack); P. Henrici, Applied and Computational Complex Analysis, vol. 1, Wiley (1974),
+    sec. 4.10 (the argument principle).
+
+    Examples
+    --------
+    The edge crack's symbol D(g) = 1 - cos(pi g) + 4 g + 2 g^2: the leading exponent 0 at
+    the mouth, the next roots complex:
+
+    >>> import cmath, sie
+    >>> D = lambda g: 1.0 - cmath.cos(cmath.pi * g) + 4.0 * g + 2.0 * g * g
+    >>> g1, g2 = sie.end_exponents(D, 2, above=0.0)
+    >>> round(g1.real, 6), round(g1.imag, 6)
+    (1.739593, 1.119025)
+    >>> round(g2.real, 6), round(g2.imag, 6)
+    (3.808251, 1.463928)
+    """
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or count < 1:
+        raise InvalidEndConditionError(f"count must be an integer >= 1, got {count!r}")
+    above = check_finite_real("above", above, InvalidEndConditionError)
+    try:
+        width, height = (float(v) for v in box)
+    except (TypeError, ValueError):
+        raise InvalidEndConditionError(f"box must be two positive floats (width, height), "
+                                       f"got {box!r}") from None
+    if not (0.0 < width < 1e3 and 0.0 < height < 1e3):
+        raise InvalidEndConditionError(f"box must be two positive floats below 1e3, got "
+                                       f"{box!r}")
+    lo, hi = above + 1e-6 * (1.0 + abs(above)), above + width
+    roots = []
+    for re in np.arange(lo, hi, 0.25) + 0.125:
+        for im in np.arange(0.0, height, 0.25) + 0.125:
+            g = _newton(symbol, complex(re, im), tol)
+            if g is None:
+                continue
+            if abs(g.imag) < 1e-9 * (1.0 + abs(g.real)):
+                g = complex(g.real, 0.0)
+            g = complex(g.real, abs(g.imag))
+            if not (lo < g.real < hi and g.imag < height):
+                continue
+            if all(abs(g - h) > 1e-8 * (1.0 + abs(g)) for h in roots):
+                roots.append(g)
+    found = sum(1 if g.imag == 0.0 else 2 for g in roots)
+    inside = _winding(symbol, [complex(lo, -height), complex(hi, -height),
+                               complex(hi, height), complex(lo, height)])
+    if found != inside:
+        raise InvalidEndConditionError(
+            f"the search found {found} roots (conjugates counted) of the symbol in the box "
+            f"{lo:.6g} < Re g < {hi:.6g}, abs(Im g) < {height:g}, the argument principle "
+            f"{inside}: the symbol is not analytic or not real on the real axis there, or "
+            "roots lie too close together (change box=)")
+    roots.sort(key=lambda g: (g.real, g.imag))
+    if len(roots) < count:
+        raise InvalidEndConditionError(
+            f"only {len(roots)} roots with {lo:.6g} < Re g < {hi:.6g}, Im g < {height:g}: "
+            f"enlarge box= to find {count}")
+    return tuple(roots[:count])
 
 
 # --------------------------------------------------------------------------
@@ -526,8 +683,305 @@ def series_log_potential(c, alpha: float, beta: float, vm1, vp1):
 
 
 # --------------------------------------------------------------------------
+# further exponents at an explicit end: extra columns of the basis
+# --------------------------------------------------------------------------
+_MAX_FURTHER = 8        # further exponents per end, at most
+_BRANCH_TOL = 1e-17     # the innermost piece toward a further exponent's branch point holds
+#                         at most this fraction of the integral (the grading's depth)
+_MAX_LEVELS = 60        # geometric levels toward such an end, at most
+
+
+def check_further(name: str, value):
+    """``value`` as (leading exponent, further exponents): a tuple ``(e0, g1, g2, ...)`` of an
+    explicit exponent e0 in (-1, 1) and further exponents of psi's expansion at that end,
+    psi ~ c0 d^e0 + sum_j c_j d^g_j + ... (d the distance to the end): real or complex,
+    finite, Re g_j > e0, none repeated (a complex g_j stands for itself and its conjugate;
+    the one with Im g_j >= 0 is kept); else InvalidEndConditionError."""
+    if not isinstance(value, tuple) or len(value) < 2:
+        raise InvalidEndConditionError(
+            f"{name}: further exponents are given as a tuple (e0, g1, ...) of the leading "
+            f"exponent and at least one further one, got {value!r}")
+    lead = check_explicit_exponent(name, value[0]) if is_explicit(value[0]) else None
+    if lead is None:
+        raise InvalidEndConditionError(
+            f"{name} = {value!r}: the first entry of (e0, g1, ...) must be the end's leading "
+            "exponent, a real number in (-1, 1) (further exponents need an explicit end)")
+    rest = value[1:]
+    if len(rest) > _MAX_FURTHER:
+        raise InvalidEndConditionError(f"{name}: at most {_MAX_FURTHER} further exponents, "
+                                       f"got {len(rest)}")
+    out = []
+    for g in rest:
+        if isinstance(g, (bool, np.bool_, str, bytes)) or not isinstance(g, numbers.Number):
+            raise InvalidEndConditionError(
+                f"{name}: a further exponent must be a real or complex number, got {g!r}")
+        g = complex(g)
+        if not (math.isfinite(g.real) and math.isfinite(g.imag)):
+            raise InvalidEndConditionError(f"{name}: a further exponent must be finite, "
+                                           f"got {g!r}")
+        if not g.real > lead:
+            raise InvalidEndConditionError(
+                f"{name}: a further exponent must have a real part above the leading "
+                f"exponent {lead!r} (the expansion's later terms), got {g!r}")
+        g = complex(g.real, abs(g.imag))
+        if g in out:
+            raise InvalidEndConditionError(
+                f"{name}: the further exponent {g!r} is repeated (a complex exponent implies "
+                "its conjugate: give one of the pair)")
+        out.append(g)
+    return lead, tuple(out)
+
+
+def _expm1c(z):
+    """exp(z) - 1 for complex z without cancellation for small z."""
+    a, b = z.real, z.imag
+    return (np.expm1(a) * np.cos(b) - 2.0 * np.sin(0.5 * b) ** 2) + 1j * np.exp(a) * np.sin(b)
+
+
+def _log_ratio(num, den, diff):
+    """log(num / den) (num, den real > 0 or complex off the cut) with diff = num - den given
+    exactly: log1p(diff / den) where the ratio is near 1 (Kahan's form, complex too)."""
+    w = diff / den
+    near = np.abs(w) < 0.5
+    out = np.where(near, 0j, np.log(num + 0j) - np.log(den + 0j))
+    if np.any(near):
+        wn = np.broadcast_to(w, out.shape)[near] + 0j
+        u = 1.0 + wn
+        same = u == 1.0
+        lg = np.where(same, wn, np.log(u) * wn / np.where(same, 1.0, u - 1.0))
+        out[near] = lg
+    return out
+
+
+def _levels(dmin_frac, e_sum):
+    """The depth toward a branch point of exponent sum e_sum = 1 + e_near + Re r > 0: the
+    first edge at (point scale) times this fraction."""
+    k = math.ceil(math.log(1.0 / _BRANCH_TOL) / (e_sum * math.log(_RATIO)))
+    return _RATIO ** -min(max(k, 1), _MAX_LEVELS) * dmin_frac
+
+
+def _edges(dmin):
+    """Distances 0, dmin, 4 dmin, ..., 1 (the last piece at least a quarter of its
+    neighbour)."""
+    edges = [0.0]
+    e = dmin
+    while e < 1.0:
+        edges.append(e)
+        e *= _RATIO
+    edges.append(1.0)
+    return edges
+
+
+def further_rule(q, alpha, beta, left_min, right_min):
+    """A rule for int_{-1}^{1} g(v) w(v) dv, w = (1-v)^alpha (1+v)^beta, graded geometrically
+    (ratio 4) toward each end from the distance ``left_min`` / ``right_min`` (None: one piece
+    on that half, Gauss-Jacobi of the end's factor): g may have a branch point at the end
+    (a further exponent, (1+v)^r) and be nearly singular beyond it on the scale of the
+    graded pieces.  Returns 1 + v, 1 - v (each from its own end) and the weights."""
+    dls, drs, wts = [], [], []
+    for dmin, left_side in ((left_min, True), (right_min, False)):
+        edges = [0.0, 1.0] if dmin is None else _edges(min(dmin, 0.25))
+        e_near, e_far = (beta, alpha) if left_side else (alpha, beta)
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            near, far, wt = _piece(lo, hi, q, e_near, e_far)
+            dls.append(near if left_side else far)
+            drs.append(far if left_side else near)
+            wts.append(wt)
+    return np.concatenate(dls), np.concatenate(drs), np.concatenate(wts)
+
+
+def _frame(end, dl, dr, alpha, beta):
+    """The frame in which the further term's end is the left one: (near distances, far
+    distances, exponent at the far end, at the near end, sign of the transform)."""
+    return (dl, dr, alpha, beta, 1.0) if end == -1 else (dr, dl, beta, alpha, -1.0)
+
+
+def further_hilbert(end, r, alpha, beta, dl_x, dr_x, rule):
+    """H[e](x) = (1/pi) PV int e(t)/(t - x) dt for e = w s, s = (1+t)^r (end -1) or
+    (1-t)^r (end +1), Re r > 0, at x with 1 + x = dl_x, 1 - x = dr_x: the divided
+    difference of s by ``rule`` = (1 + t, 1 - t, weights), the weight's transform in closed
+    form, H[e](x) = (1/pi) int w (s(t) - s(x))/(t - x) dt + s(x) H[w](x) (complex)."""
+    dl_t, dr_t, wt = rule
+    nl_t, nr_t, a_far, b_near, sign = _frame(end, dl_t, dr_t, alpha, beta)
+    nl_x, nr_x, *_ = _frame(end, dl_x, dr_x, alpha, beta)
+    # t - x in the frame, from the distances to the nearer end of each (exact next to it)
+    diff = np.where(nl_t <= nr_t, nl_t - nl_x, nr_x - nr_t)
+    sx = np.exp(r * np.log(nl_x))
+    dd = sx * _expm1c(r * _log_ratio(nl_t, nl_x, diff))
+    dd = np.where(diff == 0.0, r * sx / nl_x, dd / np.where(diff == 0.0, 1.0, diff))
+    hw = _weight_hilbert_dist(np.array([nr_x]), np.array([nl_x]), a_far, b_near)[0]
+    return sign * (np.sum(wt * dd) / math.pi + sx * hw)
+
+
+def further_moment(end, r, alpha, beta):
+    """int_{-1}^{1} w s dt = 2^{alpha+beta+r+1} B(far + 1, near + r + 1) (complex)."""
+    from scipy.special import loggamma
+    a_far, b_near = (alpha, beta) if end == -1 else (beta, alpha)
+    return complex(np.exp((a_far + b_near + r + 1.0) * math.log(2.0) + loggamma(a_far + 1.0)
+                          + loggamma(b_near + r + 1.0) - loggamma(a_far + b_near + r + 2.0)))
+
+
+def further_values(end, r, u):
+    """s(u) = (1+u)^r (end -1) or (1-u)^r (end +1) at local u in [-1, 1], 0 at the end."""
+    d = (1.0 + u) if end == -1 else (1.0 - u)
+    d = np.asarray(d, dtype=float)
+    return np.where(d > 0.0, np.exp(r * np.log(np.where(d > 0.0, d, 1.0))), 0.0)
+
+
+def _further_terms(further, alpha, beta):
+    """[(end, r)] with r = g - (that end's exponent), one per further exponent."""
+    left, right = further
+    return [(-1, g - beta) for g in left] + [(1, g - alpha) for g in right]
+
+
+def _branch_min(terms, end, d):
+    """The grading's first edge toward ``end`` for the terms there (None if none), on the
+    scale min(d, 1) of the point's distance d to it."""
+    sums = [1.0 + (beta_or_alpha) + t_r.real for (e, t_r, beta_or_alpha) in terms if e == end]
+    if not sums:
+        return None
+    return _levels(min(d, 1.0), min(sums))
+
+
+def further_images(block, x_dist, terms, alpha, beta, q):
+    """The complex images a e + b H[e] + h int k(x, t) e(t) dt of the further terms
+    (``terms`` = [(end, r)]) at the points of local distances x_dist = (1 + x, 1 - x):
+    matrix (len(x), len(terms)), by :func:`further_rule` graded toward the terms' ends
+    (and toward an explicit end the kernel is singular at)."""
+    dl_x, dr_x = x_dist
+    iv = block.interval
+    out = np.zeros((dl_x.size, len(terms)), dtype=complex)
+    tagged = [(e, r, beta if e == -1 else alpha) for e, r in terms]
+    graded = (is_explicit(block.left), is_explicit(block.right))
+    c, d, h = iv.c, iv.d, iv.h
+    for i in range(dl_x.size):
+        lm = _branch_min(tagged, -1, dl_x[i])
+        rm = _branch_min(tagged, 1, dr_x[i])
+        if block.kernel is not None:
+            if lm is None and graded[0] and dl_x[i] < 1.0:
+                lm = dl_x[i]
+            if rm is None and graded[1] and dr_x[i] < 1.0:
+                rm = dr_x[i]
+        rule = further_rule(q, alpha, beta, lm, rm)
+        dl, dr, wt = rule
+        ux = dl_x[i] - 1.0 if dl_x[i] <= dr_x[i] else 1.0 - dr_x[i]
+        if block.kernel is not None:
+            t = np.where(dl <= dr, c + h * dl, d - h * dr)
+            s_pt = c + h * dl_x[i] if dl_x[i] <= dr_x[i] else d - h * dr_x[i]
+            S = np.full(t.shape, s_pt)
+            kst = call_checked(block.kernel, "kernel", (S, t), S.shape)
+        wx = dr_x[i] ** alpha * dl_x[i] ** beta
+        for j, (end, r) in enumerate(terms):
+            val = block.b * further_hilbert(end, r, alpha, beta, dl_x[i], dr_x[i], rule)
+            if block.a != 0.0:
+                val += block.a * wx * complex(further_values(end, r, np.array([ux]))[0])
+            if block.kernel is not None:
+                s_t = np.exp(r * np.log(dl if end == -1 else dr))
+                val += h * np.sum(kst * wt * s_t)
+            out[i, j] = val
+    return out
+
+
+def _real_columns(M, terms):
+    """The real columns of complex images: Re and Im for a complex exponent (the term
+    Re((d1 - i d2) s) = d1 Re s + d2 Im s), Re alone for a real one."""
+    cols = []
+    for j, (_, r) in enumerate(terms):
+        cols.append(M[:, j].real)
+        if r.imag != 0.0:
+            cols.append(M[:, j].imag)
+    return np.column_stack(cols) if cols else np.zeros((M.shape[0], 0))
+
+
+def _complex_coefficients(d, terms):
+    """The complex coefficient of each term from the real unknowns (:func:`_real_columns`)."""
+    out, k = [], 0
+    for _, r in terms:
+        if r.imag != 0.0:
+            out.append(complex(d[k], -d[k + 1]))
+            k += 2
+        else:
+            out.append(complex(d[k], 0.0))
+            k += 1
+    return tuple(out)
+
+
+def further_cauchy(end, r, alpha, beta, v, ends, cplx):
+    """(1/pi) int_{-1}^{1} e(u)/(u - v) du for e = w s (:func:`further_hilbert`), complex: at
+    real v inside the principal value (:func:`further_hilbert`); elsewhere, in the frame of
+    the term's end, (1/pi) int w (s(t) - s(v))/(t - v) dt + s(v) F_0(v) (:func:`weight_cauchy`)
+    by :func:`further_rule` graded toward that end on the scale of v's distance to it, or
+    for v beyond that end (Re v on the far side of it, s's branch cut) the integral itself
+    by that rule.  ``ends`` = (v - 1, v + 1) from the real coordinate."""
+    vm1, vp1 = (np.asarray(e).ravel() for e in ends)
+    v = np.asarray(v).ravel()
+    out = np.empty(v.shape, dtype=complex)
+    a_far, b_near = (alpha, beta) if end == -1 else (beta, alpha)
+    e_sum = 1.0 + b_near + r.real
+    q = _Q_TRANSFORM
+    for i in range(v.size):
+        if not cplx and vm1[i].real < 0.0 < vp1[i].real:
+            dl_x, dr_x = float(vp1[i].real), float(-vm1[i].real)
+            dn = dl_x if end == -1 else dr_x
+            lm = _levels(min(dn, 1.0), e_sum)
+            rule = further_rule(q, alpha, beta, *((lm, None) if end == -1 else (None, lm)))
+            out[i] = further_hilbert(end, r, alpha, beta, dl_x, dr_x, rule)
+            continue
+        zl = complex(vp1[i]) if end == -1 else -complex(vm1[i])      # 1 + v in the frame
+        zr = -complex(vm1[i]) if end == -1 else complex(vp1[i])      # 1 - v in the frame
+        dl, dr, wt = further_rule(q, a_far, b_near, _levels(min(abs(zl), 1.0), e_sum), None)
+        s_t = np.exp(r * np.log(dl))
+        diff = dl - zl
+        if zl.real <= 0.0:
+            val = np.sum(wt * s_t / diff) / math.pi
+        else:
+            sz = np.exp(r * np.log(zl))
+            dd = sz * _expm1c(r * _log_ratio(dl, zl, diff)) / diff
+            f0 = weight_cauchy(np.array([-zr]), np.array([zl]), a_far, b_near)[0]
+            val = np.sum(wt * dd) / math.pi + sz * f0
+        out[i] = val if end == -1 else -val
+    return out
+
+
+def _terms_cauchy(terms, alpha, beta, v, ends, cplx):
+    """The transform of the real terms Re(coef e) of a piece (:func:`further_cauchy`)."""
+    out = np.zeros(np.shape(v), dtype=complex if cplx else float)
+    for end, r, coef in terms:
+        cz = further_cauchy(end, r, alpha, beta, v, ends, cplx).reshape(np.shape(v))
+        if cplx:
+            conj_ends = tuple(np.conj(np.asarray(e)) for e in ends)
+            cc = further_cauchy(end, r, alpha, beta, np.conj(v), conj_ends, True)
+            out += 0.5 * (coef * cz + np.conj(coef * cc.reshape(np.shape(v))))
+        else:
+            out += (coef * cz).real
+    return out
+
+
+# --------------------------------------------------------------------------
 # the solver
 # --------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class FurtherIntervalSolution(IntervalSolution):
+    """An :class:`sie.IntervalSolution` whose psi carries further terms at an explicit end:
+    psi = w (sum_k c_k P_k + sum_j Re(d_j s_j)), s_j = (1+u)^{r_j} (left end) or
+    (1-u)^{r_j} (right end), r_j = g_j - (that end's exponent); ``terms`` = ((end, r_j, d_j),
+    ...) with end -1 or +1.  :meth:`phi_local` (so psi, phi and the end values) and
+    :meth:`integral` include them."""
+    terms: tuple = ()
+
+    def phi_local(self, u):
+        out = super().phi_local(u)
+        u = np.asarray(u, dtype=float)
+        for end, r, coef in self.terms:
+            out = out + (coef * further_values(end, r, u)).real
+        return out
+
+    def integral(self) -> float:
+        extra = sum((coef * further_moment(end, r, self.alpha, self.beta)).real
+                    for end, r, coef in self.terms)
+        return super().integral() + float(self.interval.h * extra)
+
+
 @dataclass(frozen=True, eq=False)
 class FixedEndSolution(Solution):
     """A :class:`sie.Solution` of an interval with an explicit end exponent: psi, phi,
@@ -578,6 +1032,24 @@ class FixedEndSolution(Solution):
         """The parts psi is the sum of (a junction solution adds its regular part)."""
         return self.pieces
 
+    def phi(self, s):
+        """psi / w at s in the closed interval: the Jacobi series plus the further terms
+        at an explicit end (:attr:`further`), if any."""
+        return self._on_pieces(s, lambda p, u: p.phi_local(u), "phi")
+
+    @property
+    def further(self) -> tuple:
+        """The further terms of psi at its explicit end(s) (left=/right= (e0, g1, ...)):
+        ((end, g, d), ...), end -1 (left) or +1 (right), g the exponent as given (Im g >=
+        0), d complex: psi = w (phi + sum Re(d (1 -+ u)^(g - e0))), u the local coordinate,
+        e0 that end's exponent (next to the left end the term is ~ 2^alpha Re(d
+        (dist/h)^g), dist the distance to it, h the half-width); () without them."""
+        out = []
+        for p in self.pieces:
+            for end, r, d in getattr(p, "terms", ()):
+                out.append((end, r + (p.beta if end == -1 else p.alpha), d))
+        return tuple(out)
+
     def cauchy(self, z):
         """(1/pi) int_L psi(t)/(t - z) dt: complex z off L, real z outside L (real), and the
         principal value at real z inside an interval (real).
@@ -626,8 +1098,11 @@ class FixedEndSolution(Solution):
         out = np.zeros(flat.shape, dtype=complex if cplx else float)
         for p in self._transform_pieces():
             iv = p.interval
-            out += series_cauchy(p.coefficients, p.alpha, p.beta, iv.local(flat),
-                                 iv.local_ends(flat), cplx)
+            v, ends = iv.local(flat), iv.local_ends(flat)
+            out += series_cauchy(p.coefficients, p.alpha, p.beta, v, ends, cplx)
+            terms = getattr(p, "terms", ())
+            if terms:
+                out += _terms_cauchy(terms, p.alpha, p.beta, v, ends, cplx)
         return out.reshape(z.shape)
 
     def cauchy_limit(self, x, side=1):
@@ -715,6 +1190,11 @@ class FixedEndSolution(Solution):
         True
         """
         x = self._real_points(x, "x")
+        if any(getattr(p, "terms", ()) for p in self._transform_pieces()):
+            raise UnsupportedEquationError(
+                "log_potential is not available for a solution with further end exponents "
+                "(left=/right= (e0, g1, ...)): the log potential of their terms w s is not "
+                "implemented; cauchy() and cauchy_limit() include them")
         flat = x.ravel()
         out = np.zeros(flat.shape)
         for p in self._transform_pieces():
@@ -727,9 +1207,12 @@ class FixedEndSolution(Solution):
 
 
 def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=False,
-                stacklevel=2):
+                stacklevel=2, further=((), ())):
     """Solve one block with an explicit end exponent by the general collocation of the
-    module docstring; a :class:`FixedEndSolution`."""
+    module docstring; a :class:`FixedEndSolution`.  ``further`` = (left's, right's further
+    exponents, complex, from :func:`check_further`): each adds the columns of its term
+    w s (Re and Im for a complex exponent, :func:`further_images`) and as many collocation
+    points."""
     if np.size(breaks):
         raise UnsupportedEquationError("breaks= is not available with an explicit end "
                                        "exponent (the general collocation has no remainder)")
@@ -749,7 +1232,9 @@ def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=F
         raise SideConditionError(f"total must not be given: the index is {kappa} (an "
                                  "explicit exponent at or above 0 counts as bounded)")
     alpha, beta = e.alpha, e.beta
-    m = n - kappa
+    terms = _further_terms(further, alpha, beta)
+    n_extra = sum(2 if r.imag != 0.0 else 1 for _, r in terms)
+    m = n + n_extra - kappa
     xc = np.asarray(gauss_jacobi_cached(m, -alpha, -beta)[0])
     checks = _CHECKS if check_residual else np.empty(0)
     x = np.concatenate([xc, checks])
@@ -766,14 +1251,21 @@ def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=F
         q = max(_Q_MIN, n // 2 + 16)
         A += kernel_term(block.kernel, dist, iv, n, alpha, beta,
                          is_explicit(block.left), is_explicit(block.right), q)
+    if terms:
+        q_extra = max(_Q_MIN, n // 2 + 16)
+        A = np.hstack([A, _real_columns(further_images(block, dist, terms, alpha, beta,
+                                                       q_extra), terms)])
     s_real = np.where(x <= 0.0, iv.c + iv.h * dist[0], iv.d - iv.h * dist[1])
     fx = call_checked(f, "f", (s_real,), s_real.shape)
     Ac, fc = A[:m], fx[:m]
     consistency = None
     mu0 = jacobi_moment_shifted(e.alpha_p1, e.beta_p1)
     if kappa == 1:
-        row = np.zeros(n)
+        row = np.zeros(n + n_extra)
         row[0] = iv.h * mu0
+        if terms:
+            moments = np.array([[further_moment(end, r, alpha, beta)] for end, r in terms])
+            row[n:] = iv.h * _real_columns(moments.T, terms)[0]
         scale = float(np.max(np.abs(Ac))) / abs(row[0])
         c = np.linalg.solve(np.vstack([scale * row, Ac]), np.concatenate([[scale * total], fc]))
         matrix = np.vstack([scale * row, Ac])
@@ -800,6 +1292,13 @@ def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=F
                 f"equation between the collocation nodes: n = {n} does not resolve f or the "
                 "kernel, or the end exponents do not fit the kernel", ResidualWarning,
                 stacklevel=stacklevel)
+    if terms:
+        coefs = _complex_coefficients(c[n:], terms)
+        c = c[:n].copy()
+        c.flags.writeable = False
+        piece = FurtherIntervalSolution(iv, e, n, c, consistency, None, None,
+                                        tuple((end, r, d) for (end, r), d in zip(terms, coefs)))
+        return FixedEndSolution((piece,), block.a, block.b, multi, matrix)
     c.flags.writeable = False
     piece = IntervalSolution(iv, e, n, c, consistency, None, None)
     return FixedEndSolution((piece,), block.a, block.b, multi, matrix)
