@@ -344,3 +344,226 @@ def test_mirrored_edge_crack():
     assert abs(sol.endpoint_value(-1, 0) + ref.endpoint_value(1, 0)) < 1e-12
     s = np.array([0.1, 0.5, 0.9])
     np.testing.assert_allclose(sol(s), -ref(1.0 - s), rtol=1e-11)
+
+
+# ---------------------------------------------------------------------------------------
+# further exponents at an explicit end: left=(e0, g1, ...)
+# ---------------------------------------------------------------------------------------
+def edge_symbol_c(g):
+    """The edge crack's symbol for complex g (cmath)."""
+    import cmath
+    return 1.0 - cmath.cos(cmath.pi * g) + 4.0 * g + 2.0 * g * g
+
+
+def test_end_exponents_edge_crack_roots_against_mpmath():
+    """The roots after the mouth's 0, against mpmath.findroot on D from its own starts."""
+    mp.mp.dps = 30
+    D = lambda g: 1 - mp.cos(mp.pi * g) + 4 * g + 2 * g * g        # noqa: E731
+    refs = [complex(mp.findroot(D, mp.mpc(1.7, 1.1))), complex(mp.findroot(D, mp.mpc(3.8, 1.5)))]
+    g1, g2 = sie.end_exponents(edge_symbol_c, 2, above=0.0)
+    for got, ref in zip((g1, g2), refs):
+        assert abs(got - ref) < 1e-13 * abs(ref)
+    assert abs(g1 - complex(1.7396, 1.1190)) < 1e-4
+    # from below the leading exponent: 0 itself (a real root) comes first
+    first, second = sie.end_exponents(edge_symbol_c, 2, above=-0.5)
+    assert first == 0.0 and abs(second - g1) < 1e-13
+    # a symbol with a real root beyond the leading one
+    r, = sie.end_exponents(lambda g: (g - 0.75) * (g * g + 1.0), 1, above=0.5)
+    assert abs(r - 0.75) < 1e-14 and r.imag == 0.0
+
+
+def test_end_exponents_errors():
+    with pytest.raises(sie.InvalidEndConditionError, match="count"):
+        sie.end_exponents(edge_symbol_c, 0)
+    with pytest.raises(sie.InvalidEndConditionError, match="box"):
+        sie.end_exponents(edge_symbol_c, 1, box=(1.0, -1.0))
+    with pytest.raises(sie.InvalidEndConditionError, match="enlarge box"):
+        sie.end_exponents(edge_symbol_c, 3, box=(4.0, 3.0))        # two roots in it
+
+
+def edge_crack_further(n, *further):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sie.ResidualWarning)
+        return sie.solve(minus_p, a=0.0, b=1.0, n=n, left=(0.0, *further), right="singular",
+                         intervals=[(0.0, 1.0)], kernel=edge_kernel)
+
+
+G1 = 1.7395933563245962 + 1.1190245343424166j     # the edge symbol's first complex root
+
+
+def test_edge_crack_with_the_first_complex_exponent():
+    """The basis carrying x^g1 (g1 the symbol's next root, Re g1 = 1.74): F to 11 digits at
+    n = 32 against the Jacobi-only solution at n = 128 (another basis; itself ~1e-11 off
+    the limit 1.12152225523100 of n = 200 ... 400), where the Jacobi basis alone has 8 at
+    n = 32.  Measured F - 1.12152225523100:
+
+        n     Jacobi only   with x^g1
+        16    -3.2e-7       1.2e-8
+        24    -8.4e-8       3.1e-10
+        32    -1.5e-8       -2.2e-12
+        48    -2.4e-10      -3.1e-12
+    """
+    ref = tip_factor(edge_crack(128), 1.0)
+    err = {n: abs(tip_factor(edge_crack_further(n, G1), 1.0) - ref) for n in (16, 24, 32)}
+    assert err[32] < 1e-10
+    digits = {n: -math.log10(e) for n, e in err.items()}
+    assert digits[16] > 7.5 and digits[24] > 9.0 and digits[32] > 10.5
+    plain = {n: abs(tip_factor(edge_crack(n), 1.0) - ref) for n in (16, 32)}
+    assert plain[32] > 1e-9 and plain[16] > 1e-7           # the algebraic rate, ~n^-4.5
+    assert err[16] < 0.1 * plain[16] and err[32] < 1e-2 * plain[32]
+    sol = edge_crack_further(32, G1)
+    (end, g, d), = sol.further
+    assert end == -1 and g == G1 and abs(d) > 1e-3
+    # psi at the mouth: phi there (the further term vanishes at the end)
+    assert float(sol(np.array([0.0]))[0]) == pytest.approx(sol.endpoint_value(-1))
+    # the conjugate names the same term; the same F
+    F2 = tip_factor(edge_crack_further(32, G1.conjugate()), 1.0)
+    assert abs(F2 - tip_factor(sol, 1.0)) < 1e-13
+    with pytest.raises(sie.UnsupportedEquationError, match="log_potential"):
+        sol.log_potential(0.5)
+
+
+def test_mirrored_edge_crack_with_the_further_exponent():
+    """right=(0.0, g1) on the mirrored edge crack (the further term at the right end: the
+    reflected frame of the Hilbert transform and of the kernel's rule) gives the tip value
+    and psi of left=(0.0, g1)."""
+    sol = sie.solve(minus_p, a=0.0, b=1.0, n=24, left="singular", right=(0.0, G1),
+                    intervals=[(0.0, 1.0)], kernel=lambda x, t: -edge_kernel(1.0 - x, 1.0 - t))
+    ref = edge_crack_further(24, G1)
+    assert abs(sol.endpoint_value(-1) + ref.endpoint_value(1)) < 1e-12
+    s = np.array([1e-3, 0.1, 0.5, 0.9, 0.999])
+    np.testing.assert_allclose(sol(s), -ref(1.0 - s), rtol=1e-11)
+    assert abs(sol.integral() + ref.integral()) < 1e-12
+
+
+def _cauchy_mp(z, alpha, beta, g):
+    """(1/pi) int (1-t)^alpha (1+t)^beta g(t) / (t - z) dt for z off [-1, 1] (z None: int
+    (1-t)^alpha (1+t)^beta g(t) dt), by mpmath with t = -1 + y^(1/(1+beta)) on [-1, 0] (and
+    its mirror), the ends' powers taken out."""
+    def div(t):                           # 1 / (t - z), or pi (the integral itself)
+        return mp.pi if z is None else 1 / (t - z)
+    z = None if z is None else mp.mpc(z)
+    al, be = mp.mpf(alpha), mp.mpf(beta)
+    pl, pr = 1 / (1 + be), 1 / (1 + al)
+
+    def left(y):
+        dl = y**pl
+        return (2 - dl) ** al * g(dl - 1) * pl * div(dl - 1)
+
+    def right(y):
+        dr = y**pr
+        return (2 - dr) ** be * g(1 - dr) * pr * div(1 - dr)
+    return (mp.quad(left, [0, 1]) + mp.quad(right, [0, 1])) / mp.pi
+
+
+def test_manufactured_complex_further_term_and_its_transform():
+    """psi = w (1 + t/3 + Re(d (1+t)^r)), r = 1.2 + 0.7i, at the left end (e0 = 0.3, so
+    g = 1.5 + 0.7i), a = 1, b = 1, right "singular": n = 4 recovers d and psi to rounding;
+    psi's Cauchy transform (principal value and off L, both sides of the term's branch
+    end) against mpmath."""
+    alpha, beta, r, d = -0.25, 0.3, 1.2 + 0.7j, 0.2 - 0.1j
+    rm = mp.mpc(r.real, r.imag)
+    g = lambda t: 1 + t / 3 + mp.re(d * (1 + t) ** rm)         # noqa: E731
+    f = _manufactured_f(1.0, 1.0, alpha, beta, g)
+    sol = sie.solve(f, a=1.0, b=1.0, n=4, left=(0.3, 0.3 + r), right="singular")
+    (end, gg, dd), = sol.further
+    assert end == -1 and gg == 0.3 + r and abs(dd - d) < 1e-12
+    s = np.linspace(-0.999, 0.99, 9)
+    exact = (1 - s) ** alpha * (1 + s) ** beta * (1 + s / 3 + (d * (1 + s) ** r).real)
+    assert np.max(np.abs(sol(s) - exact)) < 1e-13
+    mp.mp.dps = 20
+    total = float(mp.re(_cauchy_mp(None, alpha, beta, g)))        # int psi
+    assert abs(sol.integral() - total) < 1e-13
+    for x in (-0.99, 0.2, 0.9):
+        assert abs(sol.cauchy(x) - float(_hilbert_mp(x, alpha, beta, g))) < 1e-13
+    for z in (0.3 + 0.2j, -1.3, 1.4, -1.01 + 0.02j):
+        ref = complex(_cauchy_mp(z, alpha, beta, g))
+        got = sol.cauchy(np.array([z]))[0]
+        assert abs(got - (ref if isinstance(z, complex) else ref.real)) < 1e-13
+
+
+def test_manufactured_real_further_term_with_a_kernel():
+    """psi = (1-t)^(-1/4) (1 + t/3 + 0.3 (1+t)^1.5), left=(0.0, 1.5), a smooth kernel: the
+    coefficient 0.3 and psi recovered at n = 4 (the kernel's columns of the further term)."""
+    g = lambda t: 1 + t / 3 + 0.3 * (1 + t) ** 1.5                # noqa: E731
+    kmp = lambda s, t: 0.3 * mp.cos(s * t) + 0.1 * s             # noqa: E731
+    f = _manufactured_f(1.0, 1.0, -0.25, 0.0, g, kmp)
+    sol = sie.solve(f, a=1.0, b=1.0, n=4, left=(0.0, 1.5), right="singular",
+                    kernel=lambda s, t: 0.3 * np.cos(s * t) + 0.1 * s)
+    (end, gg, dd), = sol.further
+    assert (end, gg) == (-1, 1.5) and abs(dd - 0.3) < 1e-12
+    s = np.linspace(-0.99, 0.99, 7)
+    exact = (1 - s) ** -0.25 * (1 + s / 3 + 0.3 * (1 + s) ** 1.5)
+    assert np.max(np.abs(sol(s) - exact)) < 1e-13
+
+
+def test_further_exponent_not_needed_changes_nothing():
+    """Exponents the solution does not have (real 1.1, complex 1.1 + 0.5i): psi w times a
+    cubic, no kernel; the solution and its integral as without them to 1e-13, their
+    coefficients ~0."""
+    alpha, beta = -0.25, 0.3
+    g = lambda t: 2 - t + t**3 / 4                            # noqa: E731
+    f = _manufactured_f(1.0, 1.0, alpha, beta, g)
+    s = np.linspace(-0.95, 0.95, 9)
+    sol0 = sie.solve(f, a=1.0, b=1.0, n=4, left=0.3, right="singular",
+                         check_residual=False)
+    for extra in (1.1, 1.1 + 0.5j):
+        sol = sie.solve(f, a=1.0, b=1.0, n=4, left=(0.3, extra), right="singular",
+                         check_residual=False)
+        assert np.max(np.abs(sol(s) - sol0(s))) < 1e-13
+        assert abs(sol.integral() - sol0.integral()) < 1e-13
+        assert abs(sol.further[0][2]) < 1e-10
+
+
+def test_further_exponents_with_index_one_and_minus_one():
+    """left=(-0.3, 0.4 + 0.6i) with right "singular" (index 1: int psi given, the further
+    term's moment in the side condition) and left=(0.3, 1.2) with right "bounded" (index -1,
+    least squares, consistent)."""
+    r = 0.7 + 0.6j
+    rm = mp.mpc(r.real, r.imag)
+    g = lambda t: 1 + t / 3 + (mp.re((0.5 + 0.2j) * (1 + t) ** rm) if t > -1 else 0)  # noqa
+    alpha, beta = -0.25, -0.3
+    f = _manufactured_f(1.0, 1.0, alpha, beta, g)
+    mp.mp.dps = 20
+    total = float(mp.re(_cauchy_mp(None, alpha, beta, g)))
+    sol = sie.solve(f, a=1.0, b=1.0, n=4, left=(-0.3, -0.3 + r), right="singular",
+                    total=total, check_residual=False)
+    assert sol.kappa == 1 and abs(sol.further[0][2] - (0.5 + 0.2j)) < 1e-12
+    assert abs(sol.integral() - total) < 1e-13
+    alpha, beta = 0.75, 0.3
+    g = lambda t: 2 - t + 0.4 * (1 + t) ** 0.9                 # noqa: E731
+    f = _manufactured_f(1.0, 1.0, alpha, beta, g)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", sie.InconsistentEquationWarning)
+        sol = sie.solve(f, a=1.0, b=1.0, n=4, left=(0.3, 1.2), right="bounded",
+                        check_residual=False)
+    assert sol.kappa == -1 and sol.consistency < 1e-13
+    assert abs(sol.further[0][2] - 0.4) < 1e-12
+
+
+@pytest.mark.parametrize("bad, match", [
+    ((0.0, -0.5), "real part above"), ((0.0, 0.0), "real part above"),
+    ((0.0, float("nan")), "finite"), ((0.0, complex(1.0, math.inf)), "finite"),
+    ((0.0, G1, G1.conjugate()), "repeated"), ((0.0, 1.5, 1.5), "repeated"),
+    ((0.0, "1.5"), "number"), ((0.0, True), "number"), ((1.5, 2.0), r"\(-1, 1\)"),
+    ((0.0,) + tuple(range(1, 10)), "at most")])
+def test_further_exponent_errors(bad, match):
+    with pytest.raises(sie.InvalidEndConditionError, match=match):
+        sie.solve(minus_p, a=0.0, b=1.0, n=8, left=bad, right="singular")
+
+
+def test_further_exponents_not_with_several_intervals_or_cases():
+    with pytest.raises(sie.SIEInputError):
+        sie.solve(minus_p, a=0.0, b=1.0, n=8, left=(0.0, 1.5), right="singular",
+                  intervals=[(0.0, 1.0), (2.0, 3.0)])
+    with pytest.raises(sie.UnsupportedEquationError):
+        sie.Equation(a=0.0, b=1.0, left=(0.0, 1.5), right="singular",
+                     intervals=[[(0.0, 1.0)], [(0.0, 2.0)]])
+    # Equation.on keeps them
+    eq = sie.Equation(a=0.0, b=1.0, left=(0.0, G1), right="singular", intervals=[(0.0, 1.0)],
+                      kernel=edge_kernel)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sie.ResidualWarning)
+        F1 = tip_factor(eq.solve(minus_p, n=24), 1.0)
+        F2 = tip_factor(eq.on([(0.0, 3.0)]).solve(minus_p, n=24), 3.0)
+    assert abs(F1 - F2) < 1e-12
