@@ -72,10 +72,13 @@ class Equation:
         The coefficients, shared by all intervals or one per interval (b != 0 and abs(b/a)
         resolvable in double precision: see :func:`sie.sie_exponents`); with a case axis,
         one per case (shape (B,)) or shared.
-    left, right : {"bounded", "singular"}, float, or a sequence of them
+    left, right : {"bounded", "singular"}, float, tuple, or a sequence of them
         psi's behaviour at the left and the right end of each interval (shared by the
         cases of a case axis), or an explicit exponent in (-1, 1) (one interval, no case
-        axis: the end of a kernel with a fixed singularity there; :mod:`sie.fixed_ends`).
+        axis: the end of a kernel with a fixed singularity there; :mod:`sie.fixed_ends`),
+        or a tuple ``(e0, g1, g2, ...)`` of an explicit exponent and further exponents of
+        psi's expansion at that end (real or complex, Re g > e0; one interval: the basis
+        carries them, :func:`sie.end_exponents`).
     intervals : array_like, optional
         L as J disjoint ascending (c, d) pairs, shape (J, 2); default the single interval
         [-1, 1].  With it, the per-interval attributes of a :class:`sie.Solution` are
@@ -102,7 +105,9 @@ class Equation:
     InvalidCoefficientError
         a or b not finite, b = 0, or abs(b/a) not resolvable; shapes that do not match.
     InvalidEndConditionError
-        ``left`` or ``right`` not "bounded" or "singular".
+        ``left`` or ``right`` not "bounded", "singular", an exponent in (-1, 1) or a tuple
+        (e0, g1, ...) of one and valid further exponents (finite, Re g > e0, none repeated,
+        a complex one implying its conjugate).
     InvalidIntervalError
         ``intervals`` not finite, ascending and disjoint (each case's interval: c < d).
     PerIntervalArgumentError
@@ -680,12 +685,17 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         (in the orthonormal scale) is at most ``tol`` times its largest term (with breaks:
         until phi stops changing by more than ``tol``), at most 4096 (:mod:`sie.auto`);
         the solution's ``n`` reports what was used.
-    left, right : {"bounded", "singular"}, float, or a sequence of them
+    left, right : {"bounded", "singular"}, float, tuple, or a sequence of them
         Behaviour of psi at the left and right end of each interval, or an explicit
         exponent in (-1, 1) for an end where the kernel has a fixed singularity (one
         interval; the general collocation of :mod:`sie.fixed_ends`, which counts an
         explicit exponent below 0 as singular for the index, and returns a
-        :class:`sie.fixed_ends.FixedEndSolution`; :func:`sie.end_exponent`).
+        :class:`sie.fixed_ends.FixedEndSolution`; :func:`sie.end_exponent`), or a tuple
+        ``(e0, g1, ...)``: that exponent and further exponents of psi's expansion there
+        (the next roots of the kernel's symbol, :func:`sie.end_exponents`; complex ones
+        imply their conjugates), which the basis then carries: e.g. the edge crack's
+        ``left=(0.0, 1.7396 + 1.1190j)`` (to full digits) converges ~N^-10 instead of
+        ~N^-4.5.
     kernel : callable or sequence of callables, optional
         Kernel k(s, t), vectorised over two arrays of equal shape, bounded on L x L (one
         per interval: the kernel of the equation collocated there).
@@ -720,7 +730,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
     InvalidCoefficientError
         a or b not finite, or b = 0.
     InvalidEndConditionError
-        ``left`` or ``right`` not "bounded", "singular" or a real number in (-1, 1).
+        ``left`` or ``right`` not "bounded", "singular", a real number in (-1, 1) or a tuple
+        (e0, g1, ...) of one and valid further exponents (:class:`sie.Equation`).
     InvalidOrderError
         n not an integer or "auto", n < 1 (n < 2 where kappa = 1), or n > ``N_MAX``;
         ``tol`` outside [1e-15, 1e-2] or given with an integer n.

@@ -33,6 +33,19 @@ squares, with the root-mean-square residual reported as ``consistency``.  The po
 the roots of P_{N-kappa}^{(-alpha,-beta)}, the classical choice when alpha + beta is an
 integer (Erdogan, Gupta & Cook 1973; Krenk 1975).
 
+Further exponents (``left=(e0, g1, ...)``, :func:`check_further`): near the explicit end psi
+= sum_j c_j d^{g_j} over the roots of the kernel's symbol (d the distance to the end), and
+the basis w P_k carries d^{e0} but not d^{g1}, so the series converges algebraically.  Each
+further g_j adds the term e_j = w s_j, s_j = (1+u)^{g_j - beta} (left end; mirrored at the
+right), as real columns (Re and Im for a complex g_j, whose conjugate is implied) and as
+many more collocation points (the roots of P_{N'-kappa}^{(-alpha,-beta)}, N' all the
+columns): a e_j + b H[e_j] + h int k e_j at each point, H[e_j](x) = (1/pi) int w (s(t) -
+s(x))/(t - x) dt + s(x) H[w](x) and the kernel term on a rule graded geometrically toward
+the end from deep enough that the innermost piece holds 1e-17 of the integral
+(:func:`further_rule`, :func:`further_images`).  The solution's phi, psi, end values,
+integral and Cauchy transform include the terms (:class:`FurtherIntervalSolution`,
+:func:`further_cauchy`); its log potential refuses them.
+
 References
 ----------
 F. Erdogan, G. D. Gupta and T. S. Cook, "Numerical solution of singular integral
@@ -976,6 +989,24 @@ class FurtherIntervalSolution(IntervalSolution):
             out = out + (coef * further_values(end, r, u)).real
         return out
 
+    def kernel_local(self, kernel, s, nodes):
+        """The Jacobi part's sum (:meth:`sie.IntervalSolution.kernel_local`) plus the further
+        terms' on :func:`further_rule` graded toward their end (the kernel smooth in t)."""
+        out = super().kernel_local(kernel, s, nodes)
+        iv = self.interval
+        mins = {}
+        for end, r, _ in self.terms:
+            e_sum = 1.0 + (self.beta if end == -1 else self.alpha) + r.real
+            mins[end] = min(mins.get(end, 1.0), _levels(1.0, e_sum))
+        dl, dr, wt = further_rule(_Q_MIN, self.alpha, self.beta, mins.get(-1), mins.get(1))
+        vals = np.zeros(dl.shape)
+        for end, r, coef in self.terms:
+            vals += (coef * np.exp(r * np.log(dl if end == -1 else dr))).real
+        t = np.where(dl <= dr, iv.c + iv.h * dl, iv.d - iv.h * dr)
+        S, T = np.meshgrid(s, t, indexing="ij")
+        kst = call_checked(kernel, "kernel", (S, T), S.shape)
+        return out + iv.h * (kst @ (wt * vals))
+
     def integral(self) -> float:
         extra = sum((coef * further_moment(end, r, self.alpha, self.beta)).real
                     for end, r, coef in self.terms)
@@ -994,11 +1025,19 @@ class FixedEndSolution(Solution):
     :func:`weight_cauchy`), the log potential by a graded rule (:func:`series_log_potential`)
     (the closed forms of :mod:`sie.cauchy` need alpha + beta an integer).
 
+    With further exponents (``left=(e0, g1, ...)``) phi, psi, the end values,
+    ``integral``, ``kernel_integral`` (their terms on a rule graded toward their end) and
+    the Cauchy transform include their terms; ``log_potential`` raises
+    :class:`sie.UnsupportedEquationError`.
+
     Attributes
     ----------
     pieces, a, b, intervals, alpha, beta, kappa, n, coefficients, consistency
         As for :class:`sie.Solution`; the exponent given at an end is its ``alpha`` or
-        ``beta``.
+        ``beta``; ``coefficients`` those of the Jacobi part.
+    further : tuple
+        ((end, g, d), ...): the further terms and their complex coefficients
+        (:attr:`further`).
 
     References
     ----------

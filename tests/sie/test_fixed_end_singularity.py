@@ -460,7 +460,7 @@ def test_manufactured_complex_further_term_and_its_transform():
     """psi = w (1 + t/3 + Re(d (1+t)^r)), r = 1.2 + 0.7i, at the left end (e0 = 0.3, so
     g = 1.5 + 0.7i), a = 1, b = 1, right "singular": n = 4 recovers d and psi to rounding;
     psi's Cauchy transform (principal value and off L, both sides of the term's branch
-    end) against mpmath."""
+    end) and kernel_integral against mpmath."""
     alpha, beta, r, d = -0.25, 0.3, 1.2 + 0.7j, 0.2 - 0.1j
     rm = mp.mpc(r.real, r.imag)
     g = lambda t: 1 + t / 3 + mp.re(d * (1 + t) ** rm)         # noqa: E731
@@ -474,6 +474,9 @@ def test_manufactured_complex_further_term_and_its_transform():
     mp.mp.dps = 20
     total = float(mp.re(_cauchy_mp(None, alpha, beta, g)))        # int psi
     assert abs(sol.integral() - total) < 1e-13
+    ref = float(mp.re(_cauchy_mp(None, alpha, beta, lambda t: g(t) * mp.cos(2 * t))))
+    got = sol.kernel_integral(lambda s, t: np.cos(s * t), np.array([2.0]))[0]
+    assert abs(got - ref) < 1e-13
     for x in (-0.99, 0.2, 0.9):
         assert abs(sol.cauchy(x) - float(_hilbert_mp(x, alpha, beta, g))) < 1e-13
     for z in (0.3 + 0.2j, -1.3, 1.4, -1.01 + 0.02j):
