@@ -43,8 +43,8 @@ columns): a e_j + b H[e_j] + h int k e_j at each point, H[e_j](x) = (1/pi) int w
 s(x))/(t - x) dt + s(x) H[w](x) and the kernel term on a rule graded geometrically toward
 the end from deep enough that the innermost piece holds 1e-17 of the integral
 (:func:`further_rule`, :func:`further_images`).  The solution's phi, psi, end values,
-integral and Cauchy transform include the terms (:class:`FurtherIntervalSolution`,
-:func:`further_cauchy`); its log potential refuses them.
+integral, kernel integral, Cauchy transform and log potential include the terms
+(:class:`FurtherIntervalSolution`, :func:`further_cauchy`, :func:`further_log_potential`).
 
 References
 ----------
@@ -956,6 +956,71 @@ def further_cauchy(end, r, alpha, beta, v, ends, cplx):
     return out
 
 
+def _further_log_rule(p, delta, q, a_far, b_near, dmin):
+    """Nodes and weights of int_{-1}^{1} g(v) w(v) dv in the frame of a further term's end
+    (the left one, w = (1-v)^a_far (1+v)^b_near), g with a log singularity at the point at
+    distance p from that end (delta: the scale, as :func:`_graded_rule_at`) and a branch
+    point at the end: the pieces of :func:`_graded_pieces`, the one touching the end
+    subdivided geometrically from ``dmin`` (:func:`_edges`; beyond distance 1 left to the
+    far end's piece).  Returns 1 + v, the offsets v - (p - 1) and the weights."""
+    edges = _graded_pieces(p, delta)
+    y, om = (np.asarray(a) for a in gauss_jacobi_cached(q, 0.0, 0.0))
+    dls, offs, wts = [], [], []
+    for k, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+        first, last = k == 0, k == len(edges) - 2
+        if first:
+            top = p + hi                                  # the piece's far edge, a distance
+            cut = min(top, 1.0) if last else top
+            sub = [e for e in _edges(min(dmin, 0.25)) if e < cut] + [cut]
+            for a, b in zip(sub[:-1], sub[1:]):
+                dl, _, wt = _piece(a, b, q, b_near, a_far)
+                dls.append(dl)
+                offs.append(dl - p)
+                wts.append(wt)
+            if last and cut < top:
+                dr, dl, wt = _piece(0.0, 2.0 - cut, q, a_far, b_near)
+                dls.append(dl)
+                offs.append(hi - dr)
+                wts.append(wt)
+        elif last:
+            dr, dl, wt = _piece(0.0, hi - lo, q, a_far, b_near)
+            dls.append(dl)
+            offs.append(hi - dr)
+            wts.append(wt)
+        else:
+            h = 0.5 * (hi - lo)
+            off = lo + h * (1.0 + y)
+            dl = p + off
+            dls.append(dl)
+            offs.append(off)
+            wts.append(om * h * dl ** b_near * (2.0 - dl) ** a_far)
+    return np.concatenate(dls), np.concatenate(offs), np.concatenate(wts)
+
+
+def further_log_potential(end, r, alpha, beta, vm1, vp1):
+    """(1/pi) int_{-1}^{1} e(u) log abs(v - u) du for e = w s (:func:`further_hilbert`),
+    complex, at real v (anywhere) given v - 1 and v + 1: :func:`_further_log_rule` in the
+    frame of the term's end, graded toward v on the scale of its distance to [-1, 1] (or
+    its rounding scale on it) and toward the branch point at the end."""
+    a_far, b_near = (alpha, beta) if end == -1 else (beta, alpha)
+    e_sum = 1.0 + b_near + r.real
+    vm1 = np.asarray(vm1, dtype=float).ravel()
+    vp1 = np.asarray(vp1, dtype=float).ravel()
+    out = np.empty(vm1.shape, dtype=complex)
+    q = _Q_TRANSFORM + (_Q_TRANSFORM % 2)
+    for i in range(vm1.size):
+        vl = vp1[i] if end == -1 else -vm1[i]          # 1 + v in the frame
+        pp = min(max(vl, 0.0), 2.0)
+        delta = abs(vl - pp)
+        if delta == 0.0:
+            delta = 8.0 * np.finfo(float).eps * max(pp, 1e-8)
+        dmin = _levels(min(max(delta, min(pp, 1.0)), 1.0), e_sum)
+        dl, off, wt = _further_log_rule(pp, delta, q, a_far, b_near, dmin)
+        s = np.exp(r * np.log(dl))
+        out[i] = np.sum(wt * s * np.log(np.abs(off - (vl - pp)))) / math.pi
+    return out
+
+
 def _terms_cauchy(terms, alpha, beta, v, ends, cplx):
     """The transform of the real terms Re(coef e) of a piece (:func:`further_cauchy`)."""
     out = np.zeros(np.shape(v), dtype=complex if cplx else float)
@@ -1026,9 +1091,9 @@ class FixedEndSolution(Solution):
     (the closed forms of :mod:`sie.cauchy` need alpha + beta an integer).
 
     With further exponents (``left=(e0, g1, ...)``) phi, psi, the end values,
-    ``integral``, ``kernel_integral`` (their terms on a rule graded toward their end) and
-    the Cauchy transform include their terms; ``log_potential`` raises
-    :class:`sie.UnsupportedEquationError`.
+    ``integral``, ``kernel_integral`` (their terms on a rule graded toward their end), the
+    Cauchy transform and the log potential include their terms (:func:`further_cauchy`,
+    :func:`further_log_potential`).
 
     Attributes
     ----------
@@ -1229,11 +1294,6 @@ class FixedEndSolution(Solution):
         True
         """
         x = self._real_points(x, "x")
-        if any(getattr(p, "terms", ()) for p in self._transform_pieces()):
-            raise UnsupportedEquationError(
-                "log_potential is not available for a solution with further end exponents "
-                "(left=/right= (e0, g1, ...)): the log potential of their terms w s is not "
-                "implemented; cauchy() and cauchy_limit() include them")
         flat = x.ravel()
         out = np.zeros(flat.shape)
         for p in self._transform_pieces():
@@ -1242,6 +1302,10 @@ class FixedEndSolution(Solution):
             vm1, vp1 = iv.local_ends(flat)
             out += iv.h * (math.log(iv.h) / math.pi * mu0 * p.coefficients[0]
                            + series_log_potential(p.coefficients, p.alpha, p.beta, vm1, vp1))
+            for end, r, coef in getattr(p, "terms", ()):
+                mom = further_moment(end, r, p.alpha, p.beta)
+                lp = further_log_potential(end, r, p.alpha, p.beta, vm1, vp1)
+                out += iv.h * (coef * (math.log(iv.h) / math.pi * mom + lp)).real
         return out.reshape(x.shape)
 
 

@@ -419,8 +419,6 @@ def test_edge_crack_with_the_first_complex_exponent():
     # the conjugate names the same term; the same F
     F2 = tip_factor(edge_crack_further(32, G1.conjugate()), 1.0)
     assert abs(F2 - tip_factor(sol, 1.0)) < 1e-13
-    with pytest.raises(sie.UnsupportedEquationError, match="log_potential"):
-        sol.log_potential(0.5)
 
 
 def test_mirrored_edge_crack_with_the_further_exponent():
@@ -434,6 +432,14 @@ def test_mirrored_edge_crack_with_the_further_exponent():
     s = np.array([1e-3, 0.1, 0.5, 0.9, 0.999])
     np.testing.assert_allclose(sol(s), -ref(1.0 - s), rtol=1e-11)
     assert abs(sol.integral() + ref.integral()) < 1e-12
+    # the transforms of the mirrored density: C(z) -> C(1 - z), V(x) -> -V(1 - x)
+    z = np.array([0.3 + 0.2j, 1.0 + 1e-6j, -1e-3 + 1e-3j, 0.5 - 2.0j])
+    np.testing.assert_allclose(sol.cauchy(z), ref.cauchy(1.0 - z), rtol=1e-12, atol=1e-12)
+    x = np.array([-0.5, 1e-6, 0.3, 0.999, 1.0, 2.0])
+    np.testing.assert_allclose(sol.log_potential(x), -ref.log_potential(1.0 - x), rtol=1e-12,
+                               atol=1e-12)
+    xi = np.array([0.2, 0.7])
+    np.testing.assert_allclose(sol.cauchy(xi), ref.cauchy(1.0 - xi), rtol=1e-12, atol=1e-12)
 
 
 def _cauchy_mp(z, alpha, beta, g):
@@ -460,7 +466,7 @@ def test_manufactured_complex_further_term_and_its_transform():
     """psi = w (1 + t/3 + Re(d (1+t)^r)), r = 1.2 + 0.7i, at the left end (e0 = 0.3, so
     g = 1.5 + 0.7i), a = 1, b = 1, right "singular": n = 4 recovers d and psi to rounding;
     psi's Cauchy transform (principal value and off L, both sides of the term's branch
-    end) and kernel_integral against mpmath."""
+    end), the log potential and kernel_integral against mpmath."""
     alpha, beta, r, d = -0.25, 0.3, 1.2 + 0.7j, 0.2 - 0.1j
     rm = mp.mpc(r.real, r.imag)
     g = lambda t: 1 + t / 3 + mp.re(d * (1 + t) ** rm)         # noqa: E731
@@ -483,6 +489,12 @@ def test_manufactured_complex_further_term_and_its_transform():
         ref = complex(_cauchy_mp(z, alpha, beta, g))
         got = sol.cauchy(np.array([z]))[0]
         assert abs(got - (ref if isinstance(z, complex) else ref.real)) < 1e-13
+    # the log potential (1/pi) int psi log abs(x - t) dt, on L, at its ends and beyond
+    for x in (-1.0, 0.3, 2.0):
+        pts = [-1, x, 1] if -1 < x < 1 else [-1, 1]
+        ref = mp.quad(lambda t: (1 - t) ** alpha * (1 + t) ** beta * g(t)
+                      * mp.log(abs(x - t)), pts) / mp.pi
+        assert abs(sol.log_potential(x) - float(ref)) < 1e-13
 
 
 def test_manufactured_real_further_term_with_a_kernel():
