@@ -142,6 +142,10 @@ class ContactResult:
     material : Material
         The material it was solved for (with ``constants``, what :meth:`stress` needs: its
         ``half_space_modes``, :class:`contact.Material`).
+    punch_material : Material or None
+        The elastic punch's material (None: a rigid punch); ``constants`` then hold the
+        pair's N11, N12, M12 (:func:`contact.elastic_punch.two_body_constants`) and the
+        half-space's stress constants.
     mu_f : float
         Signed friction coefficient -direction * friction.
     load, speed, friction, direction, punch
@@ -198,6 +202,7 @@ class ContactResult:
     method: str = "numeric"
     solution: object = field(default=None, repr=False)
     material: object = field(default=None, repr=False)
+    punch_material: object = field(default=None, repr=False)
     _residual: float | None = field(default=None, repr=False)
     # computes the residual of this result where the solver has its own way (a batch)
     _residual_source: object = field(default=None, repr=False)

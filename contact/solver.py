@@ -32,6 +32,7 @@ from sie.exponents import MIN_B_OVER_A, check_coefficients
 
 from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
+from .elastic_punch import punch_constants, two_body_constants
 from .kernel import contact_kernel, own_errors
 from .continuation import (ZoneState, follow_last_again, follow_load, inspect_state,
                            zone_pressures)
@@ -99,7 +100,7 @@ def _surface_constants(material, speed, constants):
 
 
 def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="numeric",
-          n=None, tol=1e-12, constants=None):
+          n=None, tol=1e-12, constants=None, punch_material=None):
     """Contact zones, pressure, SIFs and surface stress of a sliding punch.
 
     The zones are followed in load from the first touch of the face (its lowest point or
@@ -132,7 +133,13 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         Target relative accuracy of the pressure and the ends (adaptive n).
     constants : SurfaceConstants, optional
         ``surface_constants(material, speed)`` computed beforehand (a sweep over friction
-        at one speed shares them); must be for this speed.
+        at one speed shares them); must be for this speed (the half-space's alone, also
+        with ``punch_material``).
+    punch_material : Orthotropic or Anisotropic, optional
+        The punch's own material: an elastic punch, its compliance added to the
+        half-space's (:mod:`contact.elastic_punch`; the punch at rest, the half-space
+        moving).  None: a rigid punch.  The result's gap is then the gap between the two
+        deformed surfaces; its stresses are the half-space's.
 
     Returns
     -------
@@ -183,7 +190,7 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
-    problem = _problem(material, punch, speed, friction, direction, constants)
+    problem = _problem(material, punch, speed, friction, direction, constants, punch_material)
     if method == "closed_form":
         return _closed_form_result(problem, load)
     return _numeric_cases(punch, [_Case(problem, load)], n, tol)[0]
@@ -191,7 +198,7 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
 
 def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 method="numeric", n=None, tol=1e-12, constants=None, residual=False,
-                errors="raise"):
+                errors="raise", punch_material=None):
     """:func:`solve` for many cases of one material and punch at once.
 
     ``load``, ``speed``, ``friction`` and ``direction`` broadcast against each other (numpy
@@ -203,7 +210,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
 
     Parameters
     ----------
-    material, punch, method, n, tol
+    material, punch, method, n, tol, punch_material
         As for :func:`solve`, shared by all cases.
     load, speed, friction, direction : float or array_like
         Per case, broadcast together.
@@ -268,6 +275,7 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                                 f"({count}), got {len(constants)}")
     cases, out = [], [None] * count
     shared = {}
+    punch_const = None if punch_material is None else punch_constants(punch_material)
     material_ok = False
     layered = getattr(material, "surface_kernel", None) is not None
     for i, (Pi, Vi, Mi, Di) in enumerate(zip(P.ravel().tolist(), V.ravel().tolist(),
@@ -283,9 +291,12 @@ def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
                 const = shared.get(key)
                 if const is None:
                     const = shared[key] = surface_constants(material, Vi)
+            if punch_const is not None:
+                const = two_body_constants(const, punch_const)
             mu_f = _signed_friction(const, Mi, Di)
             problem = _Problem(material, punch, const, const.c, Mi, Di, mu_f,
-                               contact_kernel(material, const.c, mu_f) if layered else None)
+                               contact_kernel(material, const.c, mu_f) if layered else None,
+                               punch_material)
             if method == "closed_form":
                 out[i] = _closed_form_result(problem, Pi)
                 continue
@@ -391,6 +402,7 @@ class _Problem:
     direction: int
     mu_f: float
     kernel: object = None
+    punch_material: object = None
 
     @property
     def a(self) -> float:
@@ -410,15 +422,20 @@ class _Problem:
             ContactResult
         return cls(constants=self.const, load=load, speed=self.speed, friction=self.friction,
                    direction=self.direction, mu_f=self.mu_f, punch=self.punch,
-                   material=self.material, _kernel=self.kernel, **fields)
+                   material=self.material, punch_material=self.punch_material,
+                   _kernel=self.kernel, **fields)
 
 
-def _problem(material, punch, speed, friction, direction, constants) -> _Problem:
-    """The _Problem of checked inputs (``constants``: given for this speed, or None)."""
+def _problem(material, punch, speed, friction, direction, constants,
+             punch_material=None) -> _Problem:
+    """The _Problem of checked inputs (``constants``: given for this speed, or None; an
+    elastic punch's compliance added to them, :mod:`contact.elastic_punch`)."""
     const = _surface_constants(material, speed, constants)
+    if punch_material is not None:
+        const = two_body_constants(const, punch_constants(punch_material))
     mu_f = _signed_friction(const, friction, direction)
     return _Problem(material, punch, const, float(speed), friction, direction, mu_f,
-                    contact_kernel(material, const.c, mu_f))
+                    contact_kernel(material, const.c, mu_f), punch_material)
 
 
 @dataclass(frozen=True)
@@ -535,7 +552,7 @@ def _residuals(sols, problems):
 
 
 def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=None,
-               tol=1e-12, constants=None):
+               tol=1e-12, constants=None, punch_material=None):
     """The contact at each of many loads, in one continuation from first touch.
 
     What a user plots as contact width against load: the zones are followed through the
@@ -546,7 +563,7 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
 
     Parameters
     ----------
-    material, punch, speed, friction, direction, n, tol, constants
+    material, punch, speed, friction, direction, n, tol, constants, punch_material
         As for :func:`solve`.
     loads : sequence of float
         Strictly increasing positive loads.
@@ -590,7 +607,7 @@ def load_curve(material, punch, loads, *, speed, friction=0.0, direction=-1, n=N
         i = int(np.flatnonzero(np.diff(P) <= 0)[0])
         raise LoadError(f"loads must be strictly increasing, got loads[{i}] = {float(P[i])!r} and "
                         f"loads[{i + 1}] = {float(P[i + 1])!r}")
-    problem = _problem(material, punch, speed, friction, direction, constants)
+    problem = _problem(material, punch, speed, friction, direction, constants, punch_material)
     return _numeric(problem, P.tolist(), n, tol)
 
 
