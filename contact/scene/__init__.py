@@ -13,6 +13,9 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     # factory = "mymaterials:layered"      # instead of the stiffnesses: a material of one's
     # arguments = { h = 0.1 }              # own (contact.Material) from module:function
 
+    # [punch_material]    # optional: an elastic punch of this material (the keys of
+    # preset = "zhou2014" # [material], no factory); without it the punch is rigid
+
     [punch]
     kind = "cylindrical"  # flat | triangular | parabolic | cylindrical | profile
     radius = 100.0        # flat: half_width; triangular: slope (m0); parabolic, cylindrical: radius

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 import contact
+from contact.elastic_punch import punch_constants
 from sie import N_MAX
 
 from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
@@ -115,6 +116,7 @@ class _Parser:
         if not isinstance(title, str):
             raise self.error("title", f"must be a string, got {_describe(title)}")
         material = self.material(self.table(data, "material", required=True))
+        punch_material = self.punch_material(data)
         punch = self.punch(self.table(data, "punch", required=True))
         motion = self.motion(self.table(data, "motion", required=True), material)
         fields, x, grid, figures = self.outputs(self.table(data, "outputs"))
@@ -128,62 +130,63 @@ class _Parser:
             title = _default_title(punch)
         scene = Scene(source=self.source, title=title, material=material, punch=punch,
                       motion=motion, fields=fields, x=x, numerics=numerics, sweep=sweep,
-                      base_dir=self.base_dir, grid=grid, figures=figures)
+                      base_dir=self.base_dir, grid=grid, figures=figures,
+                      punch_material=punch_material)
         self.check_cases(scene)
         return scene
 
-    def material(self, table: dict) -> MaterialSpec:
-        self.check_keys(table, MATERIAL_KEYS, "material")
+    def material(self, table: dict, section: str = "material") -> MaterialSpec:
+        self.check_keys(table, MATERIAL_KEYS, section)
         if "factory" in table:
-            return self.material_factory(table)
+            return self.material_factory(table, section)
         if "arguments" in table:
-            raise self.error("material.arguments", "given without material.factory",
+            raise self.error(f"{section}.arguments", f"given without {section}.factory",
                              'factory = "module:function" with arguments = { ... } (its '
                              "keyword arguments)")
         kind = table.get("kind", "orthotropic")
         if kind not in MATERIAL_KINDS:
             close = difflib.get_close_matches(str(kind), MATERIAL_KINDS, n=1)
             guess = f"; did you mean {close[0]!r}?" if close else ""
-            raise self.error("material.kind", f"unknown kind {kind!r}{guess}",
+            raise self.error(f"{section}.kind", f"unknown kind {kind!r}{guess}",
                              " | ".join(MATERIAL_KINDS))
         rho = None
         if "rho" in table:
-            rho = self.number("material.rho", table["rho"], "a density > 0")
+            rho = self.number(f"{section}.rho", table["rho"], "a density > 0")
             if rho <= 0:
-                raise self.error("material.rho", f"must be > 0, got {rho!r}", "a density > 0")
+                raise self.error(f"{section}.rho", f"must be > 0, got {rho!r}", "a density > 0")
         if kind == "anisotropic":
-            return self.anisotropic(table, rho)
+            return self.anisotropic(table, rho, section)
         aniso = [k for k in ("C", "engineering", "rotation") if k in table]
         if aniso:
-            raise self.error(f"material.{aniso[0]}", "is a key of an anisotropic material",
+            raise self.error(f"{section}.{aniso[0]}", "is a key of an anisotropic material",
                              'kind = "anisotropic" with C or engineering (and rotation), or '
                              "an orthotropic material's C11, C12, C22, C33 or preset")
         stiff = [k for k in ("C11", "C12", "C22", "C33") if k in table]
         if "preset" in table:
             preset = table["preset"]
             if stiff:
-                raise self.error(f"material.{stiff[0]}", "given together with material.preset",
+                raise self.error(f"{section}.{stiff[0]}", f"given together with {section}.preset",
                                  "either preset or all of C11, C12, C22, C33")
             if preset not in PRESETS:
                 close = difflib.get_close_matches(str(preset), PRESETS, n=1)
                 guess = f"; did you mean {close[0]!r}?" if close else ""
-                raise self.error("material.preset", f"unknown preset {preset!r}{guess}",
+                raise self.error(f"{section}.preset", f"unknown preset {preset!r}{guess}",
                                  ", ".join(repr(p) for p in PRESETS))
             m = PRESETS[preset]()
             return MaterialSpec(m.C11, m.C12, m.C22, m.C33, rho=rho, preset=preset)
         missing = [k for k in ("C11", "C12", "C22", "C33") if k not in table]
         if missing:
-            raise self.error(f"material.{missing[0]}", "is missing",
+            raise self.error(f"{section}.{missing[0]}", "is missing",
                              'all of C11, C12, C22, C33 (numbers), or preset = "zhou2014"')
-        C = [self.number(f"material.{k}", table[k], "a number (stiffness; sweeps are allowed "
+        C = [self.number(f"{section}.{k}", table[k], "a number (stiffness; sweeps are allowed "
                          "only under [motion] and [punch])") for k in ("C11", "C12", "C22", "C33")]
         try:
             contact.Orthotropic(*C, rho=rho)
         except contact.MaterialError as exc:
-            raise self.error("material", str(exc)) from None
+            raise self.error(section, str(exc)) from None
         return MaterialSpec(*C, rho=rho)
 
-    def anisotropic(self, table: dict, rho) -> MaterialSpec:
+    def anisotropic(self, table: dict, rho, section: str = "material") -> MaterialSpec:
         """``kind = "anisotropic"``: ``C`` (6x6, Voigt order XX, YY, ZZ, YZ, ZX, XY) or
         ``engineering`` = {E1, E2, E3, nu12, nu13, nu23, G12, G13, G23}, and ``rotation``:
         a table {axis, degrees} or a list of them, applied in order."""
@@ -193,38 +196,38 @@ class _Parser:
                    "them) and rho")
         other = [k for k in table if k not in ("kind", "C", "engineering", "rotation", "rho")]
         if other:
-            raise self.error(f"material.{other[0]}", "is not a key of an anisotropic material",
+            raise self.error(f"{section}.{other[0]}", "is not a key of an anisotropic material",
                              allowed)
         given = [k for k in ("C", "engineering") if k in table]
         if len(given) != 1:
-            raise self.error("material", "needs exactly one of C and engineering" if given
+            raise self.error(section, "needs exactly one of C and engineering" if given
                              else "needs C or engineering", allowed)
         C = engineering = None
         if "C" in table:
             rows = table["C"]
             if not (isinstance(rows, list) and len(rows) == 6
                     and all(isinstance(r, list) and len(r) == 6 for r in rows)):
-                raise self.error("material.C", "must be a 6 x 6 array (six lists of six "
+                raise self.error(f"{section}.C", "must be a 6 x 6 array (six lists of six "
                                  "numbers)", allowed)
-            C = tuple(tuple(self.number(f"material.C[{i}][{j}]", v, "a number (stiffness)")
+            C = tuple(tuple(self.number(f"{section}.C[{i}][{j}]", v, "a number (stiffness)")
                             for j, v in enumerate(row)) for i, row in enumerate(rows))
         else:
             eng = table["engineering"]
             if not isinstance(eng, dict):
-                raise self.error("material.engineering", f"must be a table, got "
+                raise self.error(f"{section}.engineering", f"must be a table, got "
                                  f"{_describe(eng)}", allowed)
-            self.check_keys(eng, ENGINEERING_KEYS, "material.engineering")
+            self.check_keys(eng, ENGINEERING_KEYS, f"{section}.engineering")
             missing = [k for k in ENGINEERING_KEYS if k not in eng]
             if missing:
-                raise self.error(f"material.engineering.{missing[0]}", "is missing",
+                raise self.error(f"{section}.engineering.{missing[0]}", "is missing",
                                  "all of " + ", ".join(ENGINEERING_KEYS))
-            engineering = tuple((k, self.number(f"material.engineering.{k}", eng[k]))
+            engineering = tuple((k, self.number(f"{section}.engineering.{k}", eng[k]))
                                 for k in ENGINEERING_KEYS)
         rotation = table.get("rotation", [])
         turns = rotation if isinstance(rotation, list) else [rotation]
         parsed = []
         for k, turn in enumerate(turns):
-            key = "material.rotation" + (f"[{k}]" if isinstance(rotation, list) else "")
+            key = f"{section}.rotation" + (f"[{k}]" if isinstance(rotation, list) else "")
             if not isinstance(turn, dict):
                 raise self.error(key, f"must be a table, got {_describe(turn)}",
                                  '{ axis = "x" | "y" | "z", degrees = ... }')
@@ -241,11 +244,11 @@ class _Parser:
         try:
             anisotropic_material(C, engineering, tuple(parsed), rho)
         except contact.MaterialError as exc:
-            raise self.error("material", str(exc), allowed) from None
+            raise self.error(section, str(exc), allowed) from None
         return MaterialSpec(rho=rho, kind="anisotropic", C=C, engineering=engineering,
                             rotation=tuple(parsed))
 
-    def material_factory(self, table: dict) -> MaterialSpec:
+    def material_factory(self, table: dict, section: str = "material") -> MaterialSpec:
         """``factory = "module:function"`` (and ``arguments = { ... }``, its keyword
         arguments): a user's material, built now to check it and again wherever a case is
         solved (:meth:`MaterialSpec.build`)."""
@@ -254,28 +257,44 @@ class _Parser:
                    "relative_speed(V), half_space_modes(c)")
         other = [k for k in table if k not in ("factory", "arguments")]
         if other:
-            raise self.error(f"material.{other[0]}", "given together with material.factory",
+            raise self.error(f"{section}.{other[0]}", "given together with material.factory",
                              "either factory (with arguments) or preset, or all of C11, C12, "
                              "C22, C33 (with rho)")
-        factory = self.function("material.factory", table["factory"], allowed)
+        factory = self.function(f"{section}.factory", table["factory"], allowed)
         arguments = table.get("arguments", {})
         if not isinstance(arguments, dict):
-            raise self.error("material.arguments", f"must be a table, got {_describe(arguments)}",
+            raise self.error(f"{section}.arguments", f"must be a table, got {_describe(arguments)}",
                              "a table of the factory's keyword arguments, e.g. "
                              "arguments = { G = 80.0, nu = 0.3 }")
-        arguments = tuple((k, self.argument(f"material.arguments.{k}", v))
+        arguments = tuple((k, self.argument(f"{section}.arguments.{k}", v))
                           for k, v in arguments.items())
         spec = MaterialSpec(factory=factory, arguments=arguments, base_dir=self.base_dir)
         try:
             material = spec.build()
         except Exception as exc:               # any failure of user code is a scene error
-            raise self.error("material.factory", f"{factory}(**arguments) raised "
+            raise self.error(f"{section}.factory", f"{factory}(**arguments) raised "
                              f"{type(exc).__name__}: {exc}", allowed) from None
         try:
             contact.rayleigh_speed(material)
         except contact.ContactInputError as exc:   # not a material, or a c_R refused
-            raise self.error("material.factory", f"{factory}(**arguments) returned "
+            raise self.error(f"{section}.factory", f"{factory}(**arguments) returned "
                              f"{type(material).__name__}: {exc}", allowed) from None
+        return spec
+
+    def punch_material(self, data: dict):
+        """``[punch_material]``: an elastic punch's material, the keys of ``[material]``
+        (:func:`contact.solve`'s ``punch_material``); None without the section.  A factory's
+        material is refused: the punch is seen from below (its material turned half a turn
+        about X, :func:`contact.elastic_punch.punch_constants`)."""
+        if "punch_material" not in data:
+            return None
+        spec = self.material(self.table(data, "punch_material"), "punch_material")
+        try:
+            punch_constants(spec.build())
+        except contact.ContactInputError as exc:
+            raise self.error("punch_material", str(exc), "the keys of [material]: C11, C12, "
+                             'C22, C33 or preset, or kind = "anisotropic" with C or '
+                             "engineering (and rotation)") from None
         return spec
 
     def argument(self, key, value):

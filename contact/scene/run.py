@@ -237,7 +237,7 @@ def run_case(case: Case) -> CaseResult:
 
 def _batch_key(case):
     """What the cases solved together share."""
-    return case.material, case.punch, case.numerics
+    return case.material, case.punch_material, case.punch, case.numerics
 
 
 def _run_group(group) -> list:
@@ -249,6 +249,8 @@ def _run_group(group) -> list:
     try:
         material = build_once(first.material)
         punch = build_once(first.punch)
+        punch_material = None if first.punch_material is None else \
+            build_once(first.punch_material)
     except (contact.ContactInputError, sie.SIEInputError) as exc:
         return [exc] * len(group)             # each case of the group fails with it
     by_speed = {}
@@ -262,7 +264,7 @@ def _run_group(group) -> list:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             solved = _solve_batch([group[i] for i in ready], material, punch,
-                                  [consts[i] for i in ready])
+                                  [consts[i] for i in ready], punch_material)
         if not caught:               # else each is solved alone below, warnings attributed
             for i, r in zip(ready, solved):
                 results[i] = r
@@ -275,7 +277,8 @@ def _run_group(group) -> list:
             try:
                 res = results[i]
                 if res is None:
-                    (res,) = _solve_batch([case], material, punch, [consts[i]])
+                    (res,) = _solve_batch([case], material, punch, [consts[i]],
+                                          punch_material)
                 if not isinstance(res, Exception):
                     res = _case_result(case, res)
             except (contact.ContactInputError, sie.SIEInputError) as exc:
@@ -289,14 +292,16 @@ def _run_group(group) -> list:
     return out
 
 
-def _solve_batch(cases, material, punch, consts) -> list:
-    """contact.solve_batch of the cases (one batch key), errors in place."""
+def _solve_batch(cases, material, punch, consts, punch_material=None) -> list:
+    """contact.solve_batch of the cases (one batch key), errors in place; ``consts`` the
+    half-space's, an elastic punch's compliance added by solve_batch."""
     numerics = cases[0].numerics
     return contact.solve_batch(
         material, punch, load=[c.inputs["load"] for c in cases],
         speed=[c.speed for c in cases], friction=[c.inputs["friction"] for c in cases],
         direction=[c.inputs["direction"] for c in cases], method=numerics.method,
-        n=numerics.n, tol=numerics.tol, constants=consts, residual=True, errors="return")
+        n=numerics.n, tol=numerics.tol, constants=consts, residual=True, errors="return",
+        punch_material=punch_material)
 
 
 def _case_result(case: Case, result) -> CaseResult:

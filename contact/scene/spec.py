@@ -16,7 +16,7 @@ from contact.registry import KINDS, import_callable
 # --------------------------------------------------------------------------
 # the vocabulary of a scene
 # --------------------------------------------------------------------------
-SECTIONS = ("title", "material", "punch", "motion", "outputs", "numerics")
+SECTIONS = ("title", "material", "punch_material", "punch", "motion", "outputs", "numerics")
 MATERIAL_KEYS = ("kind", "preset", "C11", "C12", "C22", "C33", "rho", "factory", "arguments",
                  "C", "engineering", "rotation")
 MATERIAL_KINDS = ("orthotropic", "anisotropic")
@@ -336,6 +336,7 @@ class Case:
     x: XGrid | None
     numerics: Numerics
     grid: SubsurfaceGrid | None = None
+    punch_material: MaterialSpec | None = None
 
     @property
     def speed(self) -> float:
@@ -361,6 +362,7 @@ class Scene:
     base_dir: str | None = None
     grid: SubsurfaceGrid | None = None
     figures: bool = True
+    punch_material: MaterialSpec | None = None
 
     def cases(self) -> list[Case]:
         """Every case, in scene order (:meth:`iter_cases` as a list)."""
@@ -412,7 +414,8 @@ class Scene:
         return Case(index=index, label=label or self.title,
                     inputs=_case_inputs(self.material, punch, motion),
                     material=self.material, punch=_punch_spec(punch, self.base_dir),
-                    fields=self.fields, x=self.x, numerics=self.numerics, grid=self.grid)
+                    fields=self.fields, x=self.x, numerics=self.numerics, grid=self.grid,
+                    punch_material=self.punch_material)
 
     @property
     def case_count(self) -> int:
@@ -444,10 +447,13 @@ class Scene:
         if self.grid is not None:
             outputs["grid"] = self.grid.echo()
         outputs["figures"] = self.figures
-        return {"title": self.title, "material": material, "punch": punch, "motion": motion,
-                "outputs": outputs,
-                "numerics": {"method": self.numerics.method, "n": self.numerics.n,
-                             "tol": self.numerics.tol}}
+        out = {"title": self.title, "material": material, "punch": punch, "motion": motion,
+               "outputs": outputs,
+               "numerics": {"method": self.numerics.method, "n": self.numerics.n,
+                            "tol": self.numerics.tol}}
+        if self.punch_material is not None:
+            out["punch_material"] = self.punch_material.echo()
+        return out
 
 
 def clean_linspace(start: float, stop: float, num: int) -> np.ndarray:

@@ -828,3 +828,45 @@ def test_a_punch_that_cannot_be_built_fails_its_cases_by_name(monkeypatch):
     s = scene(CYL + "[motion]\nload = 0.01\nfriction = [0.0, 0.1]\n")
     with pytest.raises(CaseError, match=r"case 0 .*this face cannot be built here"):
         run_scene(s)
+
+
+# --------------------------------------------------------------------------
+# an elastic punch
+# --------------------------------------------------------------------------
+PUNCH_MATERIAL = """
+[punch_material]
+C11 = 200.0
+C12 = 60.0
+C22 = 200.0
+C33 = 70.0
+"""
+
+
+def test_a_punch_material_makes_the_punch_elastic_as_solve_does():
+    """[punch_material] (the keys of [material]): each case is contact.solve with
+    punch_material=, the sweep batched as without it; echoed."""
+    s = scene(CYL + PUNCH_MATERIAL + """
+        [motion]
+        load = 0.01
+        speed = 0.5
+        friction = [0.0, 0.3]
+    """)
+    assert s.echo()["punch_material"]["C33"] == 70.0
+    steel = contact.Orthotropic(200.0, 60.0, 200.0, 70.0)
+    for case in run_scene(s).cases:
+        ref = contact.solve(contact.zhou2014(), contact.CylindricalPunch(100.0), load=0.01,
+                            speed=0.5, friction=case.entry["inputs"]["friction"],
+                            punch_material=steel)
+        assert case.entry["ends"] == pytest.approx(list(ref.ends), abs=1e-13)
+    rigid = run_scene(scene(CYL + "[motion]\nload = 0.01\nspeed = 0.5\n")).cases[0]
+    assert rigid.entry["ends"][1] < case.entry["ends"][1]      # the pair is more compliant
+
+
+@pytest.mark.parametrize("table,key", [("[punch_material]\nC11 = 1.0\n", "punch_material.C12"),
+                                       ("[punch_material]\nC11s = 1.0\n", "punch_material.C11s"),
+                                       ('[punch_material]\nfactory = "json:loads"\n',
+                                        "punch_material")])
+def test_a_bad_punch_material_names_its_key(table, key):
+    with pytest.raises(SceneError) as exc:
+        scene(CYL + table + "[motion]\nload = 0.01\n")
+    assert exc.value.key.startswith(key), exc.value
