@@ -1046,6 +1046,7 @@ class FurtherIntervalSolution(IntervalSolution):
     ...) with end -1 or +1.  :meth:`phi_local` (so psi, phi and the end values) and
     :meth:`integral` include them."""
     terms: tuple = ()
+    given: tuple = ()        # the further exponents g_j as given, one per term
 
     def phi_local(self, u):
         out = super().phi_local(u)
@@ -1150,8 +1151,8 @@ class FixedEndSolution(Solution):
         (dist/h)^g), dist the distance to it, h the half-width); () without them."""
         out = []
         for p in self.pieces:
-            for end, r, d in getattr(p, "terms", ()):
-                out.append((end, r + (p.beta if end == -1 else p.alpha), d))
+            for (end, _, d), g in zip(getattr(p, "terms", ()), getattr(p, "given", ())):
+                out.append((end, g, d))
         return tuple(out)
 
     def cauchy(self, z):
@@ -1400,7 +1401,8 @@ def solve_fixed(block, f, n, total=None, breaks=(), check_residual=True, multi=F
         c = c[:n].copy()
         c.flags.writeable = False
         piece = FurtherIntervalSolution(iv, e, n, c, consistency, None, None,
-                                        tuple((end, r, d) for (end, r), d in zip(terms, coefs)))
+                                        tuple((end, r, d) for (end, r), d in zip(terms, coefs)),
+                                        tuple(further[0]) + tuple(further[1]))
         return FixedEndSolution((piece,), block.a, block.b, multi, matrix)
     c.flags.writeable = False
     piece = IntervalSolution(iv, e, n, c, consistency, None, None)
