@@ -116,6 +116,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
+from scipy import special as sp_special
 
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
                      InvalidCoefficientError, InvalidEndConditionError, InvalidIntervalError,
@@ -127,7 +128,8 @@ from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jaco
                      recurrence_coefficients)
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
-           "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off"]
+           "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off", "mode_log_potential",
+           "weight_log_potential"]
 
 #: Largest n :func:`solve_system` accepts: a complex mode's projection is a dense solve,
 #: O(n^3) (about 1 s at n = 2000 on two cores).
@@ -651,6 +653,255 @@ def _forward_sum(e, mu0, c, z, F0):
 
 
 # --------------------------------------------------------------------------
+# the logarithmic potential of a mode
+# --------------------------------------------------------------------------
+_L0_TERMS = 60      # terms of the end series (ratio <= 1/2) and of the series in 1/v
+
+
+def _end_power_integral(a, b, sgn, T):
+    """int_0^T tau^a (2 + sgn tau)^b dtau for 0 <= T <= 1 (Re a > -1, complex a, b, sgn =
+    +-1): the binomial series 2^b T^{a+1} sum_k binom(b, k) (sgn T/2)^k / (a + 1 + k)
+    (termwise integration of (1 + sgn tau/2)^b, which converges uniformly for tau <= 1:
+    60 terms leave (1/2)^60 of the first), exact to rounding."""
+    T = np.asarray(T, dtype=float)
+    out = np.zeros(T.shape, dtype=complex)
+    pos = T > 0.0
+    if not pos.any():
+        return out
+    t = T[pos]
+    r = 0.5 * sgn * t
+    acc = np.zeros(t.shape, dtype=complex)
+    coef = 1.0 + 0j
+    pw = np.ones(t.shape)
+    for k in range(_L0_TERMS):
+        acc += (coef / (a + 1.0 + k)) * pw
+        coef *= (b - k) / (k + 1.0)
+        pw = pw * r
+    out[pos] = 2.0 ** b * np.exp((a + 1.0) * np.log(t)) * acc
+    return out
+
+
+def _linear_integral(p, lo, hi):
+    """int_lo^hi p for p of degree <= 1 (a callable on arrays): (hi - lo) p((lo + hi)/2)."""
+    return (hi - lo) * p(0.5 * (lo + hi))
+
+
+def _distances(v, dist):
+    """(1 - v, 1 + v): from the caller's physical coordinate where given (``dist``), which
+    keeps their relative precision next to the ends, else from v."""
+    if dist is None:
+        return 1.0 - v, 1.0 + v
+    return (np.asarray(dist[0], dtype=float).ravel(), np.asarray(dist[1], dtype=float).ravel())
+
+
+def weight_log_potential(e: ModeExponents, mu0, v, dist=None):
+    r"""L_0(v) = (1/pi) int_{-1}^{1} w(u) log abs(v - u) du, w = (1-u)^alpha (1+u)^beta, at
+    real v (complex exponents; any v, finite at the ends), complex.
+
+    Parameters
+    ----------
+    e : ModeExponents
+        The mode's exponents (alpha + beta = -kappa an integer).
+    mu0 : complex
+        int w (:attr:`SystemSolution.mu0`).
+    v : array_like of float
+        Real points.
+    dist : (array_like, array_like), optional
+        (1 - v, 1 + v) from the caller's coordinate (their relative precision next to the
+        ends matters where w is singular).
+
+    Returns
+    -------
+    ndarray of complex, the size of v (flat).
+
+    Notes
+    -----
+    At the ends, the derivative of the Beta integral in an exponent (DLMF 5.12.1):
+    L_0(1) = (mu_0/pi) (log 2 + digamma(alpha + 1) - digamma(alpha + beta + 2)), L_0(-1)
+    the same with alpha and beta exchanged.  Elsewhere from the nearer end, dL_0/dv = -H[w]
+    inside and -F_0 outside: inside (0 <= v < 1) L_0(v) = L_0(1) + int_v^1 (-lambda w + p),
+    H[w] = -lambda w + p by the dominant identity (4) of the module docstring (p the image
+    of c = (1), of degree <= 1); beside (1 < v < 2) L_0(v) = L_0(1) - int_1^v
+    (Omega/sin(pi alpha) + p), F_0 as in :func:`_f0`; v < 0 the same from -1 (Omega =
+    (-1)^kappa abs(v-1)^alpha abs(v+1)^beta for v < -1).  The integrals of the weight are
+    binomial series in the distance to the end, at most 1 (:func:`_end_power_integral`,
+    60 terms: 2^-60).  For abs(v) >= 2 the expansion (1/pi) [mu_0 log abs(v) -
+    sum_{j>=1} mu_j / (j v^j)] with the weight's moments (:func:`_weight_moments`).
+
+    References
+    ----------
+    NIST DLMF 5.12.1 (the Beta integral), 5.2.2 (digamma); N. I. Muskhelishvili, Singular
+    Integral Equations (1953), sec. 29.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from sie.systems import mode_exponents, weight_log_potential
+    >>> e = mode_exponents(0.0, "bounded", "bounded")        # w = sqrt(1 - u^2)
+    >>> L = weight_log_potential(e, np.pi / 2, np.array([0.0, 1.0]))
+    >>> np.round(L.real, 12).tolist()            # -(1/2) log 2 - 1/4 both (Chebyshev U_0)
+    [-0.596573590279, -0.596573590279]
+    """
+    v = np.asarray(v, dtype=float).ravel()
+    dr, dl = _distances(v, dist)
+    out = np.empty(v.shape, dtype=complex)
+    al, be = e.alpha, e.beta
+    dig_ab = sp_special.digamma(al + be + 2.0)
+    l_right = mu0 / np.pi * (math.log(2.0) + sp_special.digamma(al + 1.0) - dig_ab)
+    l_left = mu0 / np.pi * (math.log(2.0) + sp_special.digamma(be + 1.0) - dig_ab)
+    img = _moment_images(e, np.array([1.0 + 0j]))
+
+    def p(s):
+        return _series_at(img, -al, -be, np.asarray(s, dtype=complex))
+    av = np.abs(v)
+    far = av >= 2.0
+    if far.any():
+        vf = v[far]
+        K = _L0_TERMS
+        top = float(np.max(1.0 / np.abs(vf)))
+        if top < 0.5:
+            K = max(1, min(_L0_TERMS, math.ceil(_L0_TERMS * math.log(2.0) / -math.log(top))))
+        mu = _weight_moments(e, mu0, K + 1)
+        y = 1.0 / vf
+        acc = np.zeros(vf.shape, dtype=complex)
+        for j in range(K, 0, -1):                      # Horner in 1/v
+            acc = (acc + mu[j] / j) * y
+        out[far] = (mu0 * np.log(np.abs(vf)) - acc) / np.pi
+    near = ~far
+    right = near & (v >= 0.0) & (dr <= 0.0)            # at or beside the right end
+    left = near & (v < 0.0) & (dl <= 0.0)
+    sel = right & (dr == 0.0)
+    out[sel] = l_right
+    sel = left & (dl == 0.0)
+    out[sel] = l_left
+    sel = near & (v >= 0.0) & (dr > 0.0)
+    if sel.any():
+        out[sel] = l_right + (-e.lam * _end_power_integral(al, be, -1.0, dr[sel])
+                              + dr[sel] * p(0.5 * (1.0 + v[sel])))
+    sel = near & (v < 0.0) & (dl > 0.0)
+    if sel.any():
+        out[sel] = l_left - (-e.lam * _end_power_integral(be, al, -1.0, dl[sel])
+                             + dl[sel] * p(0.5 * (v[sel] - 1.0)))
+    sel = right & (dr < 0.0)
+    if sel.any():
+        out[sel] = l_right - (_end_power_integral(al, be, 1.0, -dr[sel]) / e.sin
+                              - dr[sel] * p(0.5 * (1.0 + v[sel])))
+    sel = left & (dl < 0.0)
+    if sel.any():
+        out[sel] = l_left + ((-1.0) ** e.kappa * _end_power_integral(be, al, 1.0, -dl[sel])
+                             / e.sin - dl[sel] * p(0.5 * (v[sel] - 1.0)))
+    return out
+
+
+def _shifted(e: ModeExponents):
+    """The exponents raised by one, as :func:`mode_cauchy_off`, :func:`_forward_sum` and
+    :func:`f0_far` need them (alpha and beta only)."""
+    from types import SimpleNamespace
+    return SimpleNamespace(alpha=e.alpha + 1.0, beta=e.beta + 1.0)
+
+
+def mode_log_potential(e: ModeExponents, mu0, c, v, dist=None):
+    r"""(1/pi) int_{-1}^{1} w(u) sum_j c_j P_j^{(alpha,beta)}(u) log abs(v - u) du at real v
+    (any; finite at the ends), for a mode with real or complex exponents; complex.
+
+    Parameters
+    ----------
+    e : ModeExponents
+        The mode's exponents.
+    mu0 : complex
+        int w.
+    c : array_like of complex
+        The mode's Jacobi coefficients.
+    v : array_like of float
+        Real points.
+    dist : (array_like, array_like), optional
+        (1 - v, 1 + v) from the caller's coordinate.
+
+    Returns
+    -------
+    ndarray of complex, the size of v (flat).
+
+    Notes
+    -----
+    For j >= 1, w P_j = -(1/(2j)) d/du [w~ P_{j-1}^{(alpha+1,beta+1)}], w~ = (1 - u^2) w
+    (DLMF 18.9.16; for complex parameters by the identity theorem, as the dominant identity
+    in the module docstring), and w~ vanishes at both ends (Re alpha, Re beta > -1), so
+    integrating by parts
+
+        (1/pi) int w P_j log abs(v - u) du
+            = (1/(2j)) (1/pi) int w~ P_{j-1}^{(alpha+1,beta+1)} / (u - v) du,
+
+    a principal value for v inside, continuous up to the ends (w~ is Hoelder there).  That
+    is the functions of the second kind F~_k of the shifted weight, from
+    F~_0(v) = (1 - v^2) F_0(v) - (mu_1 + v mu_0)/pi (as 1 - u^2 = (1 - v^2) - (u - v)(u + v)),
+    F_0 = H[w] = -lambda w + p on [-1, 1] (the dominant identity (4); the first term
+    vanishes at the ends), the closed form Omega/sin(pi alpha) + p beside it
+    (:func:`_f0`), the shifted weight's moments for abs(v) >= 2 (:func:`f0_far`), with
+    mu~_0 = int w~ = 4 mu_0 (alpha+1)(beta+1) / ((alpha+beta+2)(alpha+beta+3)) (Beta
+    function).  The recurrence runs forward from F~_0 on [-1, 1] (the mean of the two
+    boundary values satisfies it; both solutions oscillate there, so it is stable), and off
+    it as in :func:`mode_cauchy_off` (forward near, Miller's backward recurrence away).
+    j = 0: c_0 L_0 (:func:`weight_log_potential`).
+
+    References
+    ----------
+    NIST DLMF 18.9.16; N. I. Muskhelishvili, Singular Integral Equations (1953), sec. 29
+    (boundary values at the ends).
+
+    Examples
+    --------
+    w = sqrt(1 - u^2), P_1^{(1/2,1/2)} = 3u/2: (1/pi) int w (3u/2) log abs(v - u) du =
+    (3/8)(v^2 - 1/2)... inside (the Chebyshev expansion of log):
+
+    >>> import numpy as np
+    >>> from sie.systems import mode_exponents, mode_log_potential
+    >>> e = mode_exponents(0.0, "bounded", "bounded")
+    >>> v = np.array([0.3])
+    >>> L = mode_log_potential(e, np.pi / 2, np.array([0.0, 1.0]), v)
+    >>> bool(abs(L[0] - (-0.75 * (0.3 - 4 * 0.3 ** 3 / 3))) < 1e-15)
+    True
+    """
+    v = np.asarray(v, dtype=float).ravel()
+    dr, dl = _distances(v, dist)
+    c = np.asarray(c, dtype=complex)
+    out = np.zeros(v.shape, dtype=complex)
+    if c.size == 0 or v.size == 0:
+        return out
+    out += c[0] * weight_log_potential(e, mu0, v, (dr, dl))
+    if c.size == 1:
+        return out
+    es = _shifted(e)
+    ab = e.alpha + e.beta
+    mu0s = 4.0 * mu0 * (e.alpha + 1.0) * (e.beta + 1.0) / ((ab + 2.0) * (ab + 3.0))
+    mu1 = _weight_moments(e, mu0, 2)[1]
+    cs = c[1:] / (2.0 * np.arange(1, c.size))
+    img = _moment_images(e, np.array([1.0 + 0j]))
+    f0s = np.empty(v.shape, dtype=complex)
+    on = (dr >= 0.0) & (dl >= 0.0)
+    if on.any():
+        s, r, l = v[on], dr[on], dl[on]
+        end = (r == 0.0) | (l == 0.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            w = np.where(end, 0.0, np.exp(e.alpha * np.log(r) + e.beta * np.log(l)))
+        h0 = -e.lam * w + _series_at(img, -e.alpha, -e.beta, s.astype(complex))
+        f0s[on] = np.where(end, 0.0, r * l * h0) - (mu1 + s * mu0) / np.pi
+        out[on] += _forward_sum(es, mu0s, cs, s.astype(complex), f0s[on])
+    far = np.abs(v) >= 2.0
+    beside = ~on & ~far
+    if beside.any():
+        s, r, l = v[beside], dr[beside], dl[beside]
+        omega = np.exp(e.alpha * np.log(-r / l)) * l ** (-float(e.kappa))
+        f0 = omega / e.sin + _series_at(img, -e.alpha, -e.beta, s.astype(complex))
+        f0s[beside] = r * l * f0 - (mu1 + s * mu0) / np.pi
+    if far.any():
+        f0s[far] = f0_far(es, mu0s, v[far].astype(complex))
+    off = ~on
+    if off.any():
+        out[off] += mode_cauchy_off(es, mu0s, cs, v[off].astype(complex), f0=f0s[off])
+    return out
+
+
+# --------------------------------------------------------------------------
 # the solver
 # --------------------------------------------------------------------------
 def _per_mode(name, v, m):
@@ -1021,6 +1272,121 @@ class SystemSolution:
         if z.dtype.kind != "c":
             psi = psi.real
         return psi.reshape((-1,) + z.shape)
+
+    def cauchy_limit(self, x, side=1):
+        """The one-sided limits of the Cauchy transform on the real line:
+        C(x + i0 side) with C(z) = (1/pi) int_c^d psi(t)/(t - z) dt, shape (m,) + x.shape.
+
+        Inside (c, d) this is H[psi](x) + side i psi(x) (the Plemelj formulas, per component;
+        H[psi] from the dominant identity (4) of the module docstring); off [c, d] it is the
+        (real) transform, as :meth:`cauchy`.  The conventions of
+        :meth:`sie.Solution.cauchy_limit`.
+
+        Parameters
+        ----------
+        x : array_like of float
+            Real points, not at an end of the interval.
+        side : {1, -1}
+            The limit from above (+1) or from below (-1).
+
+        Returns
+        -------
+        ndarray of complex, shape (m,) + x.shape
+
+        Raises
+        ------
+        EvaluationPointError
+            x complex, not finite or at an end; ``side`` not +1 or -1.
+
+        References
+        ----------
+        N. I. Muskhelishvili, Singular Integral Equations (1953), sec. 17 (the Plemelj
+        formulas).
+
+        Examples
+        --------
+        The interface crack (b = psi_1 + i psi_2, i beta_D b + H[b] = 1, int b = 0):
+
+        >>> import numpy as np, sie
+        >>> A = np.array([[0.0, -0.3], [0.3, 0.0]])
+        >>> sol = sie.solve_system(lambda s: np.array([1.0 + 0 * s, 0 * s]), A, np.eye(2),
+        ...                        n=4, left="singular", right="singular", total=[0.0, 0.0])
+        >>> x = np.array([0.5]); F = sol.cauchy_limit(x, side=-1)
+        >>> bool(np.allclose(F, sol.cauchy(x) - 1j * sol(x), rtol=0, atol=1e-14))
+        True
+        """
+        if isinstance(side, bool) or side not in (1, -1):
+            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
+                                       f"got {side!r}")
+        x = np.asarray(x)
+        if x.dtype.kind == "c":
+            raise EvaluationPointError("x must be real (the limits are taken on the real "
+                                       "line; use cauchy() at complex points); got complex")
+        if not np.isfinite(x).all():
+            raise EvaluationPointError("x must be finite real points")
+        c, d = self.interval
+        xf = np.asarray(x, dtype=float)
+        out = self.cauchy(xf).astype(complex)          # refuses the ends
+        inside = (xf > c) & (xf < d)
+        if inside.any():
+            out[:, inside] += side * 1j * self(xf[inside])
+        return out
+
+    def log_potential(self, x):
+        r"""V_i(x) = (1/pi) int_c^d psi_i(t) log abs(x - t) dt at real x (anywhere: inside,
+        at the ends, where it is finite, outside), shape (m,) + x.shape, real.
+
+        With t = m + h u, x = m + h v and psi = Re(V phi),
+        V(x) = h Re sum_k V_{ik} [(log h / pi) mu0_k c_k0 + L_k(v)], L_k the mode's
+        (1/pi) int w_k Phi_k log abs(v - u) du (:func:`mode_log_potential`): for the terms
+        j >= 1 integration by parts with w P_j^{(alpha,beta)} = -(1/(2j)) d/du[(1 - u^2) w
+        P_{j-1}^{(alpha+1,beta+1)}] (DLMF 18.9.16, complex exponents by analytic
+        continuation), which gives (1/(2j)) times the Cauchy transform (principal value
+        inside) of the shifted series, by the recurrence of the functions of the second kind;
+        the term j = 0, the potential of the weight, in closed form at the ends (the
+        derivative of the Beta integral: digamma), from the nearer end by the integral of
+        its derivative -H[w] (inside, the dominant identity) or -F_0 (beside) as binomial
+        series, and by the expansion in 1/v with the weight's moments for abs(v) >= 2.  No
+        quadrature: exact to rounding.  dV/dx = -H[psi](x) inside.
+
+        Raises
+        ------
+        EvaluationPointError
+            complex or non-finite x.
+
+        References
+        ----------
+        N. I. Muskhelishvili, Singular Integral Equations (1953), sec. 29 (boundary values
+        at the ends); NIST DLMF 18.9.16 (the derivative of the weighted Jacobi polynomial),
+        5.12.1 (the Beta integral).
+
+        Examples
+        --------
+        Far away the potential tends to (int psi_i) log abs(x) / pi:
+
+        >>> import numpy as np, sie
+        >>> A = np.array([[0.2, -0.3], [0.3, 0.2]])
+        >>> sol = sie.solve_system(lambda s: np.array([1.0 + 0 * s, s]), A, np.eye(2), n=6,
+        ...                        left="bounded", right="singular")
+        >>> x = np.array([1e9])
+        >>> bool(np.allclose(sol.log_potential(x)[:, 0], sol.integral() * np.log(1e9) / np.pi,
+        ...                  rtol=1e-8, atol=0))
+        True
+        """
+        x = np.asarray(x)
+        if x.dtype.kind == "c" or not np.isfinite(x).all():
+            raise EvaluationPointError("x must be finite real points")
+        c, d = self.interval
+        mid, h = 0.5 * (c + d), 0.5 * (d - c)
+        xf = np.asarray(x, dtype=float).ravel()
+        v = (xf - mid) / h
+        v = np.where(xf == d, 1.0, np.where(xf == c, -1.0, v))
+        dist = ((d - xf) / h, (xf - c) / h)     # 1 - v, 1 + v to full relative precision
+        modal = np.array([h * (math.log(h) / math.pi * mu * ck[0]
+                               + mode_log_potential(e, mu, ck, v, dist))
+                          for e, mu, ck in zip(self.exponents, self.mu0, self.coefficients)])
+        out = (self.modes.vectors @ modal).real
+        return out.reshape((-1,) + x.shape)
 
     def _hilbert_modes(self, u):
         """H[phi_k](u) per mode at local points strictly inside (-1, 1), complex."""
