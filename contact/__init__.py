@@ -18,6 +18,7 @@ from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
                      NearRayleighWarning, ProfileCallableError, PunchGeometryError, SpeedError,
                      StressPointError, UnboundedStressError)
 from .material import Isotropic, Orthotropic, zhou2014
+from .partial_slip import CoupledPartialSlipError, PartialSlipResult
 from .protocol import Material, MaterialModes, SurfaceKernel
 from .punches import (CylindricalPunch, FlatPunch, ParabolicPunch, ProfilePunch, Punch,
                       TriangularPunch)
@@ -33,6 +34,7 @@ __all__ = [
     "relative_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
     "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "Event",
+    "PartialSlipResult", "CoupledPartialSlipError",
     "contact_length",
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",

@@ -33,6 +33,7 @@ from sie.exponents import MIN_B_OVER_A, check_coefficients
 from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
 from .elastic_punch import punch_constants, two_body_constants
+from .partial_slip import PartialSlipResult, check_decoupled, stick_load
 from .kernel import contact_kernel, own_errors
 from .continuation import (ZoneState, follow_last_again, follow_load, inspect_state,
                            zone_pressures)
@@ -100,7 +101,7 @@ def _surface_constants(material, speed, constants):
 
 
 def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="numeric",
-          n=None, tol=1e-12, constants=None, punch_material=None):
+          n=None, tol=1e-12, constants=None, punch_material=None, tangential_load=None):
     """Contact zones, pressure, SIFs and surface stress of a sliding punch.
 
     The zones are followed in load from the first touch of the face (its lowest point or
@@ -140,10 +141,17 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         half-space's (:mod:`contact.elastic_punch`; the punch at rest, the half-space
         moving).  None: a rigid punch.  The result's gap is then the gap between the two
         deformed surfaces; its stresses are the half-space's.
+    tangential_load : float, optional
+        Q, abs(Q) < friction * load: the contact pressed by ``load`` and then pulled by Q at
+        that load, in partial slip (Cattaneo, Mindlin; :mod:`contact.partial_slip`), for a
+        pair whose normal and tangential problems decouple (``punch_material`` the
+        material, at speed 0: Dundurs' beta = 0); ``direction`` is not used
+        (the sign of Q is the sense of the traction on the half-space).  Returns a
+        :class:`contact.partial_slip.PartialSlipResult`.
 
     Returns
     -------
-    ContactResult
+    ContactResult, or PartialSlipResult with ``tangential_load``
 
     Raises
     ------
@@ -190,10 +198,35 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
+    if tangential_load is not None:
+        return _partial_slip(material, punch, load, speed, friction, method, n, tol,
+                             constants, punch_material, tangential_load)
     problem = _problem(material, punch, speed, friction, direction, constants, punch_material)
+    return _solve_problem(problem, load, method, n, tol)
+
+
+def _solve_problem(problem, load, method, n, tol):
+    """The ContactResult of a checked problem at one load."""
     if method == "closed_form":
         return _closed_form_result(problem, load)
-    return _numeric_cases(punch, [_Case(problem, load)], n, tol)[0]
+    return _numeric_cases(problem.punch, [_Case(problem, load)], n, tol)[0]
+
+
+def _partial_slip(material, punch, load, speed, friction, method, n, tol, constants,
+                  punch_material, tangential_load) -> PartialSlipResult:
+    """:func:`solve` with a tangential load: the contact at P and at P* = P - abs(Q)/mu with
+    the friction sign(Q) mu (eq. (1) of :mod:`contact.partial_slip`), for a pair that
+    decouples (checked on the constants)."""
+    P_star = stick_load(load, tangential_load, friction)
+    Q = float(tangential_load)
+    # mu_f = -direction * friction = sign(Q) mu: q = mu_f p on the slip zones
+    direction = -1 if Q > 0 else 1
+    problem = _problem(material, punch, speed, friction if Q != 0.0 else 0.0, direction,
+                       constants, punch_material)
+    check_decoupled(problem.const)
+    full = _solve_problem(problem, load, method, n, tol)
+    stick = None if Q == 0.0 else _solve_problem(problem, P_star, method, n, tol)
+    return PartialSlipResult(full, stick, Q, load, friction)
 
 
 def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,

@@ -9,7 +9,6 @@ from pathlib import Path
 import numpy as np
 
 import contact
-from contact.elastic_punch import punch_constants
 from sie import N_MAX
 
 from contact.registry import (INTERPOLANTS, KINDS, PROFILE_SHAPE_KEYS, Piece, Samples,
@@ -288,14 +287,13 @@ class _Parser:
         about X, :func:`contact.elastic_punch.punch_constants`)."""
         if "punch_material" not in data:
             return None
-        spec = self.material(self.table(data, "punch_material"), "punch_material")
-        try:
-            punch_constants(spec.build())
-        except contact.ContactInputError as exc:
-            raise self.error("punch_material", str(exc), "the keys of [material]: C11, C12, "
-                             'C22, C33 or preset, or kind = "anisotropic" with C or '
-                             "engineering (and rotation)") from None
-        return spec
+        table = self.table(data, "punch_material")
+        if "factory" in table:
+            raise self.error("punch_material.factory", "is not available for the punch (it is "
+                             "seen from below: its material turned half a turn about X)",
+                             "the keys of [material]: C11, C12, C22, C33 or preset, or "
+                             'kind = "anisotropic" with C or engineering (and rotation)')
+        return self.material(table, "punch_material")
 
     def argument(self, key, value):
         """A factory argument: a number, string or boolean, or a list of them (a tuple)."""
