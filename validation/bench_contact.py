@@ -30,7 +30,10 @@ Targets
   nu = 0.3): a flat punch with rounded corners (breaks at X = +-1, radius 50) pressed wider
   than its flat in <= 10 x the time of the cylinder of the same radius; the gap check's share
   of that solve <= 20 %; the cylinder at n = 20000 no slower than the same parabola as a
-  ProfilePunch slope at n = 20000 (ratio <= 1).
+  ProfilePunch slope at n = 20000 (ratio <= 1);
+* two bodies in contact: a cylinder of one isotropic material pressed on itself
+  (``punch_material``) and pulled in partial slip (``tangential_load``, Cattaneo) in
+  <= 5 x the sliding solve of the same pair and face.
 """
 from __future__ import annotations
 
@@ -261,6 +264,19 @@ def anisotropic_rows(mat, repeat=50):
     return rows
 
 
+def two_body_rows(repeat=20):
+    """Rows (case, time [ms], ratio to its baseline, target): Cattaneo's partial slip of two
+    cylinders of one material against the sliding solve of the same pair and face."""
+    m = contact.Isotropic(1.0, 0.3)
+    punch = contact.CylindricalPunch(1.0)
+    kw = dict(load=0.01, speed=0.0, friction=0.5, punch_material=m)
+    base = best(lambda: contact.solve(m, punch, **kw), repeat)
+    t = best(lambda: contact.solve(m, punch, tangential_load=0.003, **kw), repeat)
+    return [("two cylinders of one material, partial slip (Q / mu P = 0.6, Cattaneo)", t,
+             f"{t / base:.2f} x the sliding solve of the pair",
+             f"<= 5 x {'PASS' if t <= 5.0 * base else 'FAIL'}")]
+
+
 def main():
     OUT.mkdir(parents=True, exist_ok=True)
     mat = contact.zhou2014()
@@ -319,6 +335,11 @@ def main():
               "| case | time [ms] | against a baseline of the same run | target |",
               "|---|---|---|---|"]
     for case, t, ratio, target in kink_rows():
+        lines.append(f"| {case} | {t * 1e3:.2f} | {ratio} | {target} |")
+    lines += ["", "## two bodies: an elastic punch, partial slip", "",
+              "| case | time [ms] | against a baseline of the same run | target |",
+              "|---|---|---|---|"]
+    for case, t, ratio, target in two_body_rows():
         lines.append(f"| {case} | {t * 1e3:.2f} | {ratio} | {target} |")
     text = "\n".join(lines) + "\n"
     (OUT / "bench_contact.md").write_text(text)
