@@ -271,8 +271,8 @@ class SurfaceResponse:
 
     def surface_constants(self) -> SurfaceConstants:
         """The entries the contact equation needs, as :class:`contact.SurfaceConstants`:
-        N11, N12, N21, N22 (the properties of the same names) and the couplings M12, M21,
-        M22; ``eta_product``, ``eta_sum`` and ``rayleigh_denominator`` (of the orthotropic
+        N11, N12, N21, N22 (the properties of the same names), the couplings M12, M21,
+        M22 and the tangential compliance slope_hilbert[X, q]; ``eta_product``, ``eta_sum`` and ``rayleigh_denominator`` (of the orthotropic
         formulas) None.
 
         With q = mu_f p and r = 0 they give dv/dX = a p + b Hc[p], a = N12 mu_f,
@@ -283,7 +283,8 @@ class SurfaceResponse:
         """
         return SurfaceConstants(N11=self.N11, N12=self.N12, N21=self.N21, N22=self.N22,
                                 c=self.c, rayleigh_speed=self.rayleigh_speed,
-                                M12=self.M12, M21=self.M21, M22=self.M22)
+                                M12=self.M12, M21=self.M21, M22=self.M22,
+                                tangential_compliance=float(self.slope_hilbert[0, 0]))
 
     def pressure_coefficients(self, q_ratio=0.0) -> PressureCoefficients:
         """The response to a pressure p alone, with q = q_ratio p (Coulomb friction, signed

@@ -126,6 +126,10 @@ class SurfaceConstants:
         sigma_XX per Hc[p] (dimensionless).
     M22 : float, keyword, default 0
         sigma_XX per q, the local part (dimensionless).
+    tangential_compliance : float or None, keyword, default None
+        du/dX (X, 0) per Hc[q], the tangential slope under the tangential traction (the
+        counterpart of N11; unit: 1 / stress unit): what the creepage of rolling is made of.
+        None where the material does not give it.
 
     Notes
     -----
@@ -188,6 +192,7 @@ class SurfaceConstants:
     M12: float = 0.0
     M21: float = 0.0
     M22: float = 0.0
+    tangential_compliance: float | None = None
 
     def equation_coefficients(self, mu_f) -> tuple[float, float]:
         """(a, b) of the contact equation a p + b Hc[p] = H'(X) with q = mu_f p: eq. (1) of
@@ -641,8 +646,12 @@ def orthotropic_surface_constants(material, c) -> SurfaceConstants:
             N12 = (C11' - C12 P) / Delta
             N21 = -[C11' (C11 C22 - C12^2 - C12 C33 c^2) - C12 C22 C33 c^2 P] / (C22 Delta)
             N22 = -P S (C11 C22 - C12^2) / Delta
+            tangential_compliance = -P S C22 / Delta
 
-        for dv/dX = N12 q + N11 Hc[p] and sigma_XX = N21 p + N22 Hc[q].
+        for dv/dX = N12 q + N11 Hc[p], sigma_XX = N21 p + N22 Hc[q] and du/dX =
+        -N12 p + tangential_compliance Hc[q] (the last from the same derivation; checked
+        against the Stroh formalism of :class:`contact.Anisotropic`, whose
+        slope_hilbert[X, q] it is).
 
     Raises
     ------
@@ -674,4 +683,5 @@ def orthotropic_surface_constants(material, c) -> SurfaceConstants:
         eta_product=P,
         eta_sum=S,
         rayleigh_denominator=delta,
+        tangential_compliance=-P * S * C22 / delta,
     )

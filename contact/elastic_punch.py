@@ -107,8 +107,10 @@ def punch_constants(punch_material) -> SurfaceConstants:
 
 def two_body_constants(half_space: SurfaceConstants, punch: SurfaceConstants) -> SurfaceConstants:
     """The constants of the contact equation with an elastic punch: eq. (1) of the module
-    docstring (N11 + N11_p, N12 - N12_p, M12 - M12_p); the half-space's own N21, N22, M21,
-    M22, speed and Rayleigh speed.
+    docstring (N11 + N11_p, N12 - N12_p, M12 - M12_p), and the relative tangential slope's
+    compliance T + T_p (du/dX - du_p/dX = (T + T_p) Hc[q] - (N12 - N12_p) p + ...: seen from
+    below the punch feels -q and keeps X); the half-space's own N21, N22, M21, M22, speed
+    and Rayleigh speed.
 
     Parameters
     ----------
@@ -138,6 +140,9 @@ def two_body_constants(half_space: SurfaceConstants, punch: SurfaceConstants) ->
     >>> round(both.N11, 12), both.N12
     (-3.64, 0.0)
     """
+    T, Tp = half_space.tangential_compliance, punch.tangential_compliance
     return dataclasses.replace(half_space, N11=half_space.N11 + punch.N11,
                                N12=half_space.N12 - punch.N12,
-                               M12=half_space.M12 - punch.M12)
+                               M12=half_space.M12 - punch.M12,
+                               tangential_compliance=None if T is None or Tp is None
+                               else T + Tp)

@@ -18,6 +18,18 @@ own contact, which is where Hc[p(.; P)] = H'/b too, so Hc[q] = 0 there; its cont
 stick zone (inside the full contact: the zones grow with the load), and q = s mu p beyond
 it.  For two cylinders this is Cattaneo's c/a = sqrt(1 - abs(Q)/(mu P)).
 
+Steady rolling (Carter 1926; quasi-static: the bodies roll at speed 0 in the frame of the
+contact, ``rolling=True``): in the stick zone the two surfaces move together while the
+material flows through it, so there the relative tangential strain is constant, the
+creepage xi = d(u - u_p)/dX = T Hc[q] (T the pair's tangential compliance), not 0.  With
+q = s mu p - q*, Hc[q*] = s mu (H' - k) / b on the stick zone, k = b xi / (T s mu): q* is
+s mu times the pressure of the face tilted by k, H(X) - k X, at the load P*, and the stick
+zone its contact, which in steady rolling lies at the leading edge (the material entering the
+contact sticks first).  k is found so that the stick zone's leading end is the contact's;
+given the creepage instead of Q, P* is.  For two cylinders this is Carter's stick zone
+[-a, -a + 2c] (rolling toward -X), c/a = sqrt(1 - abs(Q)/(mu P)), and creepage
+abs(xi) = mu (a - c) / R when T = b (one isotropic material).
+
 Linearity carries (1) to every field: the surface stress and the field under it are those
 of the result at P with the friction s mu, minus the friction part of the result at P*
 (:class:`PartialSlipResult`).  A pair that couples (beta != 0: a rigid punch on a
@@ -31,9 +43,10 @@ import dataclasses
 import math
 
 from .errors import ContactInputError, FrictionError, LoadError, check_finite
+from .punches import ProfilePunch
 
 __all__ = ["CoupledPartialSlipError", "PartialSlipResult", "check_decoupled",
-           "stick_load"]
+           "stick_load", "tilted_face"]
 
 #: abs(N12*), abs(M12*) below this fraction of abs(N11*) count as decoupled (beta = 0).
 DECOUPLED_TOLERANCE = 1e-12
@@ -69,6 +82,17 @@ def check_decoupled(constants) -> None:
         "of one material at rest (punch_material = the material, speed = 0), or two isotropic "
         "ones with (1 - 2 nu1)/G1 = (1 - 2 nu2)/G2; the coupled problem (a system whose "
         "coefficients jump at the stick-slip ends) is not available yet")
+
+
+def tilted_face(punch, k):
+    """The face of ``punch`` tilted by k: slope H'(X) - k, the same breaks and extent (a
+    :class:`contact.ProfilePunch`)."""
+    lo, hi = punch.extent
+    face = ProfilePunch(lambda X: punch.slope(X) - k, breaks=tuple(punch.breaks),
+                        face=(lo, hi))
+    # a constant off the slope keeps its degree (an exact basis size) and its monotony
+    face.slope_degree, face.convex = punch.slope_degree, punch.convex
+    return face
 
 
 def stick_load(load: float, tangential_load, friction: float) -> float:
@@ -107,8 +131,9 @@ class PartialSlipResult:
         Q, the tangential traction's resultant on the half-space.
     load, friction : float
         P and mu.
-    creepage : None
-        (Steady rolling's; a static contact has none.)
+    creepage : float or None
+        Steady rolling's creepage xi = d(u - u_p)/dX on the stick zone (module docstring);
+        None for a static contact.
 
     References
     ----------
@@ -134,7 +159,7 @@ class PartialSlipResult:
     tangential_load: float
     load: float
     friction: float
-    creepage: None = None
+    creepage: float | None = None
 
     # -- zones --------------------------------------------------------------------------
     @property

@@ -33,7 +33,7 @@ from sie.exponents import MIN_B_OVER_A, check_coefficients
 from .closed_form import CLOSED_FORMS
 from .constants import SurfaceConstants, surface_constants
 from .elastic_punch import punch_constants, two_body_constants
-from .partial_slip import PartialSlipResult, check_decoupled, stick_load
+from .partial_slip import PartialSlipResult, check_decoupled, stick_load, tilted_face
 from .kernel import contact_kernel, own_errors
 from .continuation import (ZoneState, follow_last_again, follow_load, inspect_state,
                            zone_pressures)
@@ -101,7 +101,8 @@ def _surface_constants(material, speed, constants):
 
 
 def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="numeric",
-          n=None, tol=1e-12, constants=None, punch_material=None, tangential_load=None):
+          n=None, tol=1e-12, constants=None, punch_material=None, tangential_load=None,
+          rolling=False, creepage=None):
     """Contact zones, pressure, SIFs and surface stress of a sliding punch.
 
     The zones are followed in load from the first touch of the face (its lowest point or
@@ -148,6 +149,13 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
         material, at speed 0: Dundurs' beta = 0); ``direction`` is not used
         (the sign of Q is the sense of the traction on the half-space).  Returns a
         :class:`contact.partial_slip.PartialSlipResult`.
+    rolling : bool
+        Steady rolling (Carter; quasi-static, ``speed`` 0) toward ``direction`` with
+        ``tangential_load`` or ``creepage`` (one of them): the stick zone at the leading
+        edge (:mod:`contact.partial_slip`), for a pair that decouples.
+    creepage : float, optional
+        With ``rolling``: the creepage xi = d(u - u_p)/dX on the stick zone; the tangential
+        load follows.
 
     Returns
     -------
@@ -198,6 +206,12 @@ def solve(material, punch, *, load, speed, friction=0.0, direction=-1, method="n
     """
     load, friction, direction, tol = _check_inputs(material, punch, load, speed, friction,
                                                    direction, method, n, tol)
+    if rolling is not False:
+        return _rolling(material, punch, load, speed, friction, direction, method, n, tol,
+                        constants, punch_material, tangential_load, creepage, rolling)
+    if creepage is not None:
+        raise ContactInputError("creepage is the creepage of rolling: give rolling=True (a "
+                                "static contact under a tangential load: tangential_load=)")
     if tangential_load is not None:
         return _partial_slip(material, punch, load, speed, friction, method, n, tol,
                              constants, punch_material, tangential_load)
@@ -227,6 +241,81 @@ def _partial_slip(material, punch, load, speed, friction, method, n, tol, consta
     full = _solve_problem(problem, load, method, n, tol)
     stick = None if Q == 0.0 else _solve_problem(problem, P_star, method, n, tol)
     return PartialSlipResult(full, stick, Q, load, friction)
+
+
+def _rolling(material, punch, load, speed, friction, direction, method, n, tol, constants,
+             punch_material, tangential_load, creepage, rolling) -> PartialSlipResult:
+    """:func:`solve` with ``rolling``: Carter's stick zone at the leading edge (module
+    docstring of :mod:`contact.partial_slip`), the tilt k of the stick zone's face from Q
+    (or P* from the creepage) by Brent's method on the leading end."""
+    from scipy.optimize import brentq
+    if rolling is not True:
+        raise ContactInputError(f"rolling must be True or False, got {rolling!r}")
+    if (tangential_load is None) == (creepage is None):
+        raise ContactInputError("rolling needs one of tangential_load and creepage (the other "
+                                "follows)")
+    if method != "numeric":
+        raise ContactInputError('rolling takes method="numeric" (the stick zone\'s face is '
+                                "tilted: no closed form)")
+    lead = 0 if direction < 0 else 1          # the leading end: toward the rolling
+    problem = _problem(material, punch, speed, friction, -1, constants, punch_material)
+    check_decoupled(problem.const)
+    T, b = problem.const.tangential_compliance, problem.const.N11
+    if T is None:
+        raise ContactInputError("rolling needs the pair's tangential compliance (du/dX per "
+                                "Hc[q], SurfaceConstants.tangential_compliance), which this "
+                                "material does not give")
+    if friction == 0.0:
+        raise FrictionError("rolling needs friction > 0 (without friction nothing is "
+                            "transmitted and there is no stick zone)")
+
+    def at(P, k, s):
+        face = tilted_face(punch, k) if k != 0.0 else punch
+        prob = replace(problem, punch=face, mu_f=s * friction)
+        return _solve_problem(prob, P, method, n, tol)
+
+    if creepage is None:
+        P_star = stick_load(load, tangential_load, friction)
+        Q = float(tangential_load)
+        s = 1.0 if Q > 0 else -1.0
+        full = at(load, 0.0, s)
+        if Q == 0.0:
+            return PartialSlipResult(replace(full, mu_f=0.0), None, 0.0, load, friction, 0.0)
+        edge = full.zones[0].ends[lead] if lead == 0 else full.zones[-1].ends[lead]
+        span = abs(float(punch.slope(full.ends[1])) - float(punch.slope(full.ends[0])))
+        sign = -1.0 if lead == 0 else 1.0      # a convex face's stick zone moves that way
+
+        def miss(k):
+            r = at(P_star, k, s)
+            return (r.zones[0].ends[0] - edge) if lead == 0 else (r.zones[-1].ends[1] - edge)
+        k = brentq(miss, 0.0, sign * span, xtol=1e-15 * max(span, 1e-300), rtol=4 * np.finfo(float).eps)
+        stick = at(P_star, k, s)
+    else:
+        xi = check_finite("creepage", creepage, ContactInputError)
+        full0 = at(load, 0.0, 1.0)
+        if xi == 0.0:
+            return PartialSlipResult(replace(full0, mu_f=0.0), None, 0.0, load, friction, 0.0)
+        edge = full0.zones[0].ends[lead] if lead == 0 else full0.zones[-1].ends[lead]
+        sign = -1.0 if lead == 0 else 1.0
+        # xi = T s mu k / b with k of the sign that moves the stick zone to the leading end
+        s = 1.0 if xi * b / T * sign > 0 else -1.0
+        k = xi * b / (T * s * friction)
+        full = at(load, 0.0, s)
+
+        def miss(P):
+            r = at(P, k, s)
+            return (r.zones[0].ends[0] - edge) if lead == 0 else (r.zones[-1].ends[1] - edge)
+        try:
+            P_star = brentq(miss, 1e-12 * load, load, xtol=1e-15 * load, rtol=4 * np.finfo(float).eps)
+        except ValueError:
+            raise FrictionError(
+                f"creepage = {xi!r} is beyond full slip for friction = {friction!r} at load = "
+                f"{load!r} (no stick zone at the leading edge): the rolling contact slides "
+                "everywhere") from None
+        stick = at(P_star, k, s)
+        Q = s * friction * (load - P_star)
+    xi = T * s * friction * k / b
+    return PartialSlipResult(full, stick, Q, load, friction, xi)
 
 
 def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,

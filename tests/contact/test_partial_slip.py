@@ -108,3 +108,84 @@ def test_what_partial_slip_cannot_do_is_said(kw, error, match):
     args.update(kw)
     with pytest.raises(error, match=match):
         contact.solve(MAT, contact.CylindricalPunch(R), **args)
+
+
+# --------------------------------------------------------------------------
+# steady rolling (Carter)
+# --------------------------------------------------------------------------
+def carter(x, a, c, Q, direction):
+    """Carter's traction (Johnson 1985, rolling with traction): the stick zone of half-width c
+    at the leading edge (x = -a rolling toward -X), centred at d = -+(a - c)."""
+    d = -(a - c) if direction < 0 else a - c
+    p0 = 2 * P / (math.pi * a)
+    stick = np.where(np.abs(x - d) < c,
+                     (c / a) * np.sqrt(np.maximum(1 - ((x - d) / c) ** 2, 0.0)), 0.0)
+    return math.copysign(1.0, Q) * MU * p0 * (np.sqrt(1 - (x / a) ** 2) - stick)
+
+
+def roll(direction=-1, **kw):
+    return contact.solve(MAT, contact.CylindricalPunch(R), load=P, speed=0.0, friction=MU,
+                         punch_material=MAT, rolling=True, direction=direction, **kw)
+
+
+@pytest.mark.parametrize("Q,direction", [(0.003, -1), (0.003, 1), (-0.0045, -1)])
+def test_carter_stick_zone_at_the_leading_edge_traction_and_creepage(Q, direction):
+    """The stick zone [-a, -a + 2c] rolling toward -X (mirrored toward +X), c/a =
+    sqrt(1 - |Q|/(mu P)); the traction to 1e-12; the creepage xi = s mu (c - a)/R toward
+    -X (T = b for one isotropic material: Carter's |xi| = (mu a / R)(1 - c/a))."""
+    r = roll(direction, tangential_load=Q)
+    a = r.ends[1]
+    c = a * math.sqrt(1 - abs(Q) / (MU * P))
+    stick = (-a, -a + 2 * c) if direction < 0 else (a - 2 * c, a)
+    np.testing.assert_allclose(r.stick_zones[0].ends, stick, rtol=0, atol=1e-13 * a)
+    x = a * np.linspace(-0.999, 0.999, 61)
+    np.testing.assert_allclose(r.tangential_traction(x), carter(x, a, c, Q, direction),
+                               rtol=0, atol=1e-12 * MU * 2 * P / (math.pi * a))
+    s = math.copysign(1.0, Q)
+    assert r.creepage == pytest.approx(direction * s * MU * (a - c) / R, rel=1e-12)
+
+
+@pytest.mark.parametrize("xi", [-0.01, 0.02, -0.035])
+def test_the_traction_curve_from_the_creepage_is_carters(xi):
+    """Given the creepage: Q / (mu P) = 1 - (1 - |xi| R / (mu a))^2 (Carter), and Q back
+    from that creepage's solve gives the same creepage."""
+    r = roll(creepage=xi)
+    a = r.ends[1]
+    ratio = 1 - (1 - abs(xi) * R / (MU * a)) ** 2
+    assert abs(r.tangential_load) == pytest.approx(ratio * MU * P, rel=1e-11)
+    assert roll(tangential_load=r.tangential_load).creepage == pytest.approx(xi, rel=1e-11)
+
+
+def test_free_rolling_and_creepage_beyond_full_slip():
+    free = roll(tangential_load=0.0)
+    assert free.creepage == 0.0
+    assert np.all(free.tangential_traction(np.linspace(-0.1, 0.1, 5)) == 0.0)
+    a = free.ends[1]
+    with pytest.raises(contact.FrictionError, match="full slip"):
+        roll(creepage=1.01 * MU * a / R)
+
+
+@pytest.mark.parametrize("kw,match", [(dict(rolling=True), "one of"),
+                                      (dict(rolling=True, tangential_load=1e-3, creepage=1e-3),
+                                       "one of"),
+                                      (dict(creepage=1e-3), "rolling=True"),
+                                      (dict(rolling=True, creepage=1e-3, method="closed_form"),
+                                       "numeric"),
+                                      (dict(rolling=1, creepage=1e-3), "True or False")])
+def test_what_rolling_needs_is_said(kw, match):
+    with pytest.raises(contact.ContactInputError, match=match):
+        contact.solve(MAT, contact.CylindricalPunch(R), load=P, speed=0.0, friction=MU,
+                      punch_material=MAT, **kw)
+
+
+@pytest.mark.parametrize("C,c", [((5.0, 1.0, 2.0, 0.7), 0.0), ((5.0, 1.0, 2.0, 0.7), 0.5),
+                                 ((159.7885, 5.2609, 15.4732, 5.52), 0.2),
+                                 ((3.0, 1.0, 3.0, 1.0), 0.7)])
+def test_the_orthotropic_tangential_compliance_is_the_stroh_response(C, c):
+    """-P S C22 / Delta (contact.constants) against slope_hilbert[X, q] of the Stroh
+    formalism (contact.Anisotropic, an independent route), moving and at rest."""
+    o = contact.Orthotropic(*C, rho=1.0)
+    A = contact.Anisotropic.from_orthotropic(o, C13=1.0, C23=1.0, C33=2 * max(C[0], C[2]),
+                                             C44=0.6, C55=0.6, rho=1.0)
+    T = contact.surface_constants(o, c).tangential_compliance
+    assert T == pytest.approx(float(A.surface_response(c).slope_hilbert[0, 0]), rel=1e-12)
