@@ -535,9 +535,45 @@ class _Parser:
                                       self.nonnegative)
         out["direction"] = self.values("motion.direction", table.get("direction", -1),
                                        self.direction)
+        self.slip(table, out)
         # keep the scene's order of keys (it orders the sweep), defaults after
         order = [k for k in table if k in out] + [k for k in out if k not in table]
         return {k: out[k] for k in order}
+
+    def slip(self, table: dict, out: dict) -> None:
+        """``tangential_load`` (Q: partial slip, or steady rolling with ``rolling = true``),
+        ``creepage`` (steady rolling only) and ``rolling`` into ``out``; the constraints of
+        :func:`contact.solve` (abs(Q) < mu P, a pair that decouples, ...) are each case's,
+        checked when it is solved."""
+        rolling = table.get("rolling", False)
+        if not isinstance(rolling, bool):
+            raise self.error("motion.rolling", f"must be true or false, got "
+                             f"{_describe(rolling)}", "true (steady rolling toward direction, "
+                             "with tangential_load or creepage) or false (the default)")
+        for key, allowed in (("tangential_load", "a number (Q, the tangential load on the "
+                              "half-space, abs(Q) < friction * load), or a list of them (a "
+                              "sweep)"),
+                             ("creepage", "a number (the creepage of steady rolling), or a "
+                              "list of them (a sweep)")):
+            if key in table:
+                out[key] = self.values(f"motion.{key}", table[key],
+                                       lambda k, v, a=allowed: self.number(k, v, a))
+        if "creepage" in table and not rolling:
+            raise self.error("motion.creepage", "is the creepage of steady rolling, and "
+                             "motion.rolling is not true",
+                             "rolling = true with creepage, or tangential_load alone (a "
+                             "static contact in partial slip)")
+        if rolling:
+            if "tangential_load" in table and "creepage" in table:
+                raise self.error("motion.creepage", "given together with "
+                                 "motion.tangential_load (either follows from the other)",
+                                 "one of tangential_load and creepage with rolling = true")
+            if "tangential_load" not in table and "creepage" not in table:
+                raise self.error("motion.rolling", "needs motion.tangential_load or "
+                                 "motion.creepage",
+                                 "rolling = true with one of tangential_load and creepage")
+        if "rolling" in table:
+            out["rolling"] = rolling
 
     def nonnegative(self, key, value) -> float:
         allowed = "a number >= 0, or a list of them (a sweep)"

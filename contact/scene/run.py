@@ -22,7 +22,7 @@ from .batch import build_once, iter_chunks
 from .processes import cyclic_gc_paused
 from .table import CaseText, case_text, sweep_table, to_dataframe
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
-                   SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
+                   SLIP_ENTRY_KEYS, SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
 
 
@@ -258,7 +258,9 @@ def _run_group(group) -> list:
         if case.speed not in by_speed:
             by_speed[case.speed] = _constants_at(material, case.speed)
     consts = [by_speed[case.speed][0] for case in group]
-    ready = [i for i, k in enumerate(consts) if not isinstance(k, Exception)]
+    # partial slip and rolling: contact.solve one case at a time (solve_batch has neither)
+    ready = [i for i, k in enumerate(consts) if not isinstance(k, Exception)
+             and not group[i].partial_slip]
     results = [k if isinstance(k, Exception) else None for k in consts]
     if len(ready) > 1:
         with warnings.catch_warnings(record=True) as caught:
@@ -277,8 +279,7 @@ def _run_group(group) -> list:
             try:
                 res = results[i]
                 if res is None:
-                    (res,) = _solve_batch([case], material, punch, [consts[i]],
-                                          punch_material)
+                    res = _solve_one(case, material, punch, consts[i], punch_material)
                 if not isinstance(res, Exception):
                     res = _case_result(case, res)
             except (contact.ContactInputError, sie.SIEInputError) as exc:
@@ -304,9 +305,64 @@ def _solve_batch(cases, material, punch, consts, punch_material=None) -> list:
         punch_material=punch_material)
 
 
+def _solve_one(case, material, punch, consts, punch_material=None):
+    """One case alone: :func:`_solve_batch` of one, or, with a tangential load or a
+    creepage, :func:`contact.solve` (a :class:`contact.PartialSlipResult`), raising."""
+    if not case.partial_slip:
+        (res,) = _solve_batch([case], material, punch, [consts], punch_material)
+        return res
+    inputs, numerics = case.inputs, case.numerics
+    return contact.solve(
+        material, punch, load=inputs["load"], speed=case.speed, friction=inputs["friction"],
+        direction=inputs["direction"], method=numerics.method, n=numerics.n,
+        tol=numerics.tol, constants=consts, punch_material=punch_material,
+        tangential_load=inputs.get("tangential_load"), creepage=inputs.get("creepage"),
+        rolling=inputs.get("rolling", False))
+
+
+class _PartialSlipView:
+    """A :class:`contact.PartialSlipResult` as :func:`_case_result` reads a ContactResult:
+    the zones, ends, exponents, SIFs and diagnostics are those of the contact at P
+    (``full``: the pressure is the frictionless one, the pair decoupling); the tractions, the
+    surface stress and the stresses under the surface (and so their extrema, by
+    :meth:`contact.ContactResult.stress_extrema`'s search on them) the partial slip's."""
+
+    def __init__(self, result):
+        self._slip = result
+
+    def __getattr__(self, name):
+        return getattr(self._slip.full, name)
+
+    def pressure(self, X):
+        return self._slip.pressure(X)
+
+    def shear(self, X):
+        return self._slip.tangential_traction(X)
+
+    def sigma_xx(self, X):
+        return self._slip.sigma_xx(X)
+
+    def stress(self, X, Y):
+        return self._slip.stress(X, Y)
+
+    stress_extrema = contact.ContactResult.stress_extrema
+
+
+def slip_entry(result) -> dict:
+    """What a case in partial slip or steady rolling adds after its inputs: ``tangential_load``
+    (Q), ``creepage`` (None for a static contact) and ``stick_zones`` ([lo, hi] each)."""
+    return {"tangential_load": float(result.tangential_load),
+            "creepage": None if result.creepage is None else float(result.creepage),
+            "stick_zones": [[float(z.ends[0]), float(z.ends[1])] for z in result.stick_zones]}
+
+
 def _case_result(case: Case, result) -> CaseResult:
-    """The case's entry from its solved contact: the requested fields in the scene's order."""
+    """The case's entry from its solved contact: the requested fields in the scene's order
+    (after the partial slip's :func:`slip_entry` for a :class:`contact.PartialSlipResult`)."""
     entry = {"inputs": dict(case.inputs)}
+    if isinstance(result, contact.PartialSlipResult):
+        entry.update(slip_entry(result))
+        result = _PartialSlipView(result)
     several = len(result.zones) > 1
     with_sif = "sif" in case.fields
     X = None
@@ -614,6 +670,7 @@ def run_scene(scene: Scene, executor: Executor | None = None, progress: bool = F
 def _with_speed_fields(entry: dict, per_speed: dict, fields) -> dict:
     """The entry with the per-speed fields in their places among the scene's fields."""
     out = {"inputs": entry["inputs"]}
+    out.update((k, entry[k]) for k in SLIP_ENTRY_KEYS if k in entry)
     for name in fields:
         if name in per_speed:
             out[name] = per_speed[name]

@@ -26,7 +26,14 @@ ENGINEERING_KEYS = ("E1", "E2", "E3", "nu12", "nu13", "nu23", "G12", "G13", "G23
 ROTATION_KEYS = ("axis", "degrees")
 PRESETS = {"zhou2014": contact.zhou2014}
 PIECE_KEYS = ("from", "to", "coefficients")
-MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction")
+MOTION_KEYS = ("load", "speed", "velocity", "friction", "direction", "tangential_load",
+               "creepage", "rolling")
+#: The [motion] keys of partial slip and steady rolling (:mod:`contact.partial_slip`): a case
+#: with one of them is solved by :func:`contact.solve` alone (not in a batch).
+SLIP_INPUTS = ("tangential_load", "creepage")
+#: What the entry of such a case adds after its inputs: Q and the creepage (the one given and
+#: the one that follows; the creepage None for a static contact) and the stick zones.
+SLIP_ENTRY_KEYS = ("tangential_load", "creepage", "stick_zones")
 OUTPUT_KEYS = ("fields", "x", "grid", "figures")
 X_KEYS = ("start", "stop", "num")
 GRID_KEYS = ("x", "y")
@@ -325,7 +332,8 @@ class Case:
     """One point of a scene's sweep: everything needed to solve it and sample what is asked.
 
     ``inputs`` holds the scalar values of this point (speed, friction, direction, load, the
-    punch dimension, and the velocity if the scene gave one); ``label`` names the swept values.
+    punch dimension, the velocity if the scene gave one, the tangential load or the creepage
+    if given, and ``rolling = True`` for steady rolling); ``label`` names the swept values.
     """
     index: int
     label: str
@@ -341,6 +349,12 @@ class Case:
     @property
     def speed(self) -> float:
         return self.inputs["speed"]
+
+    @property
+    def partial_slip(self) -> bool:
+        """Whether the case has a tangential load or a creepage (partial slip, steady
+        rolling: :mod:`contact.partial_slip`)."""
+        return any(key in self.inputs for key in SLIP_INPUTS)
 
 
 @dataclass(frozen=True)
@@ -501,6 +515,8 @@ def _json_value(v):
 
 
 def _fmt(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
     return f"{v:+d}" if isinstance(v, int) and not isinstance(v, bool) else f"{v:g}"
 
 
@@ -517,6 +533,11 @@ def _case_inputs(material: MaterialSpec, punch: dict, motion: dict) -> dict:
         inputs[key] = punch[key]
     if "velocity" in motion:
         inputs["velocity"] = motion["velocity"]
+    for key in SLIP_INPUTS:
+        if key in motion:
+            inputs[key] = motion[key]
+    if motion.get("rolling"):
+        inputs["rolling"] = True
     return inputs
 
 

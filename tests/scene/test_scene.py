@@ -870,3 +870,124 @@ def test_a_bad_punch_material_names_its_key(table, key):
     with pytest.raises(SceneError) as exc:
         scene(CYL + table + "[motion]\nload = 0.01\n")
     assert exc.value.key.startswith(key), exc.value
+
+
+# --------------------------------------------------------------------------
+# partial slip and steady rolling
+# --------------------------------------------------------------------------
+ONE_MATERIAL = """
+[material]
+C11 = 3.0
+C12 = 1.0
+C22 = 3.0
+C33 = 1.0
+[punch_material]
+C11 = 3.0
+C12 = 1.0
+C22 = 3.0
+C33 = 1.0
+[punch]
+kind = "cylindrical"
+radius = 1.0
+"""
+SLIP_MATERIAL = contact.Orthotropic(3.0, 1.0, 3.0, 1.0)
+
+
+def test_a_tangential_load_sweep_is_cattaneos_partial_slip_as_solve_gives_it():
+    """[motion] tangential_load = [...] (one material, at rest): each case is contact.solve
+    with tangential_load=, its stick zone and shear (the tangential traction) to 1e-13, and
+    the stick zone Cattaneo's c/a = sqrt(1 - Q/(mu P))."""
+    s = scene(ONE_MATERIAL + """
+        [motion]
+        load = 0.01
+        speed = 0.0
+        friction = 0.5
+        tangential_load = [0.001, 0.003]
+        [outputs]
+        fields = ["ends", "shear", "pressure"]
+        x = { start = -0.12, stop = 0.12, num = 49 }
+    """)
+    assert s.sweep == (("motion", "tangential_load"),)
+    res = run_scene(s)
+    for case, Q in zip(res.cases, (0.001, 0.003)):
+        e = case.entry
+        assert list(e) == ["inputs", "tangential_load", "creepage", "stick_zones", "ends",
+                           "shear", "pressure"]
+        assert e["inputs"]["tangential_load"] == e["tangential_load"] == Q
+        assert e["creepage"] is None                         # a static contact
+        ref = contact.solve(SLIP_MATERIAL, contact.CylindricalPunch(1.0), load=0.01, speed=0.0,
+                            friction=0.5, punch_material=SLIP_MATERIAL, tangential_load=Q)
+        (stick,) = e["stick_zones"]
+        assert stick == pytest.approx(list(ref.stick_zones[0].ends), abs=1e-13)
+        assert e["ends"] == pytest.approx(list(ref.ends), abs=1e-13)
+        x, q = case.curve("shear")
+        assert q == pytest.approx(ref.tangential_traction(x), abs=1e-13)
+        assert np.max(np.abs(q)) > 0
+        a = e["ends"][1]
+        assert stick[1] / a == pytest.approx(np.sqrt(1 - Q / (0.5 * 0.01)), rel=1e-10)
+        assert stick[0] == pytest.approx(-stick[1], abs=1e-13)
+    columns, rows = res.table()                        # the swept Q is a column of sweep.csv
+    assert columns[:2] == ["case", "tangential_load"] and [r[1] for r in rows] == [0.001, 0.003]
+    text = json.dumps(res.to_json())                   # JSON-ready
+    assert '"stick_zones"' in text
+
+
+def test_steady_rolling_with_a_creepage_gives_solves_tangential_load():
+    """rolling = true with creepage: the entry's tangential_load is contact.solve's; the stick
+    zone at the leading edge (toward direction = -1)."""
+    xi = -0.011
+    s = scene(ONE_MATERIAL + f"""
+        [motion]
+        load = 0.01
+        friction = 0.5
+        rolling = true
+        creepage = {xi!r}
+        [outputs]
+        fields = ["ends", "constants"]
+    """)
+    (case,) = run_scene(s).cases
+    e = case.entry
+    ref = contact.solve(SLIP_MATERIAL, contact.CylindricalPunch(1.0), load=0.01, speed=0.0,
+                        friction=0.5, punch_material=SLIP_MATERIAL, rolling=True, creepage=xi)
+    assert e["inputs"]["rolling"] is True and e["inputs"]["creepage"] == xi
+    assert e["creepage"] == ref.creepage == pytest.approx(xi, rel=1e-14)
+    assert e["tangential_load"] == pytest.approx(ref.tangential_load, abs=1e-13)
+    assert 0 < abs(e["tangential_load"]) < 0.5 * 0.01
+    (stick,) = e["stick_zones"]
+    assert stick == pytest.approx(list(ref.stick_zones[0].ends), abs=1e-13)
+    assert stick[0] == pytest.approx(e["ends"][0], abs=1e-13)      # the leading edge
+    assert "constants" in e and list(e)[:4] == ["inputs", "tangential_load", "creepage",
+                                                "stick_zones"]
+
+
+def test_a_pair_that_couples_fails_its_partial_slip_case_by_name():
+    """A rigid punch on the orthotropic half-space couples (N12 != 0): the case fails with
+    contact.solve's CoupledPartialSlipError, named as other case errors are."""
+    s = scene(ONE_MATERIAL.split("[punch_material]")[0] + """
+        [punch]
+        kind = "cylindrical"
+        radius = 1.0
+        [motion]
+        load = 0.01
+        friction = 0.5
+        tangential_load = 0.002
+    """)
+    with pytest.raises(CaseError, match=r"case 0 .*tangential_load = 0\.002.*"
+                                        r"CoupledPartialSlipError") as exc:
+        run_scene(s)
+    assert isinstance(exc.value.__cause__, contact.CoupledPartialSlipError)
+
+
+@pytest.mark.parametrize("motion,key", [
+    ("creepage = 0.01", "motion.creepage"),                         # without rolling
+    ("rolling = true", "motion.rolling"),                           # without Q or creepage
+    ("rolling = true\ntangential_load = 0.001\ncreepage = 0.01", "motion.creepage"),
+    ('tangential_load = "0.001"', "motion.tangential_load"),
+    ('tangential_load = [0.001, "x"]', "motion.tangential_load[1]"),
+    ("rolling = true\ncreepage = [0.01, true]", "motion.creepage[1]"),
+    ('rolling = "yes"\ntangential_load = 0.001', "motion.rolling"),
+])
+def test_bad_partial_slip_keys_are_named(motion, key):
+    with pytest.raises(SceneError) as exc:
+        scene(ONE_MATERIAL + "[motion]\nload = 0.01\nfriction = 0.5\n" + motion + "\n")
+    assert exc.value.key == key, exc.value
