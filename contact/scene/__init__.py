@@ -26,6 +26,9 @@ A scene names a material, a punch, the motion, what to compute and, optionally, 
     # velocity = 1.2      # instead of speed: V, converted with material.rho
     friction = 0.3        # mu >= 0 (default 0)
     direction = -1        # -1: slides toward -X (trailing edge on the right), +1: toward +X
+    # tangential_load = [0.001, 0.003]   # partial slip (Cattaneo) under Q, abs(Q) < mu P;
+    # rolling = true      # steady rolling (Carter) toward direction, with tangential_load
+    # creepage = -0.01    # or the creepage instead (rolling only); see below
 
     [outputs]             # fields: ends exponents sif zones pressure shear sigma_xx roots constants
                           #         subsurface
@@ -156,6 +159,30 @@ title), with the contact zones drawn on the surface and the extremum marked.  Th
 ``radius``), may be a list of values (a profile's lists -- ``slope``, ``breaks``, ``corners``,
 ``face`` -- are data, not sweeps).  The scene runs the Cartesian product, the key met first in
 the file varying slowest.
+
+**Partial slip and steady rolling** (:mod:`contact.partial_slip`): ``[motion]
+tangential_load = Q`` pulls the contact, pressed by the load, with Q (the traction's
+resultant on the half-space, abs(Q) < friction * load) in partial slip (Cattaneo); with
+``rolling = true`` (default false) the bodies roll steadily toward ``direction`` (Carter),
+under ``tangential_load`` or ``creepage`` (one of them: the other follows).  Both may be
+lists (a sweep, e.g. a traction curve over Q).  Such a case is :func:`contact.solve` with
+``tangential_load``/``creepage``/``rolling`` and the built ``[punch_material]``, one case at
+a time (not in a batch).  Only pairs whose normal and tangential problems decouple are
+allowed (one material at rest: ``[punch_material]`` = ``[material]``, speed 0); another pair,
+abs(Q) >= mu P, a creepage beyond full slip, friction 0 fail that case when it is solved
+(a :class:`CaseError` naming it and the library's error, e.g. ``CoupledPartialSlipError``).
+The parser refuses, by key: ``creepage`` without ``rolling = true`` (``motion.creepage``),
+``rolling = true`` without either (``motion.rolling``), both together
+(``motion.creepage``), a value that is not a number (``motion.tangential_load[k]``, ...),
+and a ``rolling`` that is not a boolean.  The case's inputs carry the one given (and
+``rolling = true``); its entry adds, after the inputs, ``tangential_load`` (Q),
+``creepage`` (the creepage; null for a static contact) and ``stick_zones`` (``[[lo, hi],
+...]``).  ``ends``, ``exponents``, ``sif``, ``zones``, ``pressure`` and the diagnostics are
+those of the contact at the load (the pressure is the frictionless one, the pair
+decoupling); ``shear`` is the tangential traction q, and ``sigma_xx`` and ``"subsurface"``
+are the partial slip's fields (by superposition).  sweep.csv and the printed table have a
+column for a swept ``tangential_load`` or ``creepage`` (an input), not for the stick zones
+or the quantity that follows: those are in result.json.
 
 **Only what is asked is computed**: curves are sampled only for the requested fields
 (sigma_XX only with ``"sigma_xx"``, the field under the surface only with ``"subsurface"``),
