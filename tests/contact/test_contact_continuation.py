@@ -12,7 +12,9 @@ vanishes there) checked by a separate solve with the corner in place.
 """
 from __future__ import annotations
 
+import functools
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -381,6 +383,22 @@ def test_a_new_zone_is_found_where_the_gap_closes_not_past_it():
         assert np.min(_gap_by_quadrature(r, height, X)) > -1e-10
 
 
+@functools.lru_cache(maxsize=4)
+def _w_face_near_merge(rel):
+    """(punch, result, N11) of the frictionless W face at (1 + rel) P*: solved once for the
+    two tests that look at it (the adaptive n runs to its cap next to the merge, where the
+    inner ends are set only to ~1e-8 by side conditions whose residuals go like the gap's
+    square: ~7 s at rel = -1e-8)."""
+    k = contact.surface_constants(MAT, 0.0)
+    A = B.W_AMPLITUDE
+    punch = contact.ProfilePunch(lambda X: 4 * A * X * (X * X - 1.0), height=B.w_face,
+                                 face=B.W_FACE)
+    P = 2.0 * math.pi * A / abs(k.N11) * (1.0 + rel)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return punch, contact.solve(MAT, punch, load=P, speed=0.0), k.N11, P
+
+
 @pytest.mark.parametrize("rel", [-1e-8, -1e-6, 1e-8])
 @pytest.mark.slow
 def test_next_to_a_merge_no_state_has_a_negative_pressure_or_gap(rel):
@@ -389,12 +407,7 @@ def test_next_to_a_merge_no_state_has_a_negative_pressure_or_gap(rel):
     of the face's rise: the gap closes like the square root of the load to go); above it one zone whose pressure is
     nowhere below zero (at 20001 points: one zone was returned below the merge, its pressure
     -3.2e-7 of its peak between the check points at 1 - 1e-6)."""
-    k = contact.surface_constants(MAT, 0.0)
-    A = B.W_AMPLITUDE
-    punch = contact.ProfilePunch(lambda X: 4 * A * X * (X * X - 1.0), height=B.w_face,
-                                 face=B.W_FACE)
-    p_merge = 2.0 * math.pi * A / abs(k.N11)
-    r = contact.solve(MAT, punch, load=p_merge * (1.0 + rel), speed=0.0)
+    punch, r, _, _ = _w_face_near_merge(rel)
     assert len(r.zones) == (2 if rel < 0 else 1)
     for z in r.zones:
         X = np.linspace(*z.ends, 20003)[1:-1]
@@ -418,13 +431,8 @@ def test_the_gap_between_two_zones_about_to_merge_is_where_the_closed_form_puts_
     lose their hold on it (their residuals go like its square): Newton ends at the
     residuals' rounding floor only after a fresh Jacobian has failed to step too (an updated
     one had stopped there with the inner ends 3.5e-5 off, half the gap)."""
-    k = contact.surface_constants(MAT, 0.0)
-    A = B.W_AMPLITUDE
-    punch = contact.ProfilePunch(lambda X: 4 * A * X * (X * X - 1.0), height=B.w_face,
-                                 face=B.W_FACE)
-    P = 2.0 * math.pi * A / abs(k.N11) * (1.0 + rel)
-    r = contact.solve(MAT, punch, load=P, speed=0.0)
-    want = B.w_face_closed_form(k.N11, P)
+    _, r, N11, P = _w_face_near_merge(rel)
+    want = B.w_face_closed_form(N11, P)
     half_gap = want[1][0]
     assert len(r.zones) == 2
     for z, w in zip(r.zones, want):
