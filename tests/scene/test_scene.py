@@ -44,7 +44,9 @@ def scene(text: str, **kw):
 #: The shipped scenes that are not the paper's Figs 1-4: their number of cases and sweep.
 OTHER_SCENES = {"default": (1, ()), "profile_samples": (3, (("motion", "load"),)),
                 "w_face_two_zones": (2, (("motion", "friction"),)),
-                "subsurface_hertz": (1, ())}
+                "subsurface_hertz": (1, ()),
+                "cattaneo_fretting": (3, (("motion", "tangential_load"),)),
+                "carter_rolling": (3, (("motion", "creepage"),))}
 
 
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
