@@ -559,7 +559,8 @@ def test_bad_scene_in_a_subprocess_exits_2_without_traceback(tmp_path):
     assert proc.returncode == 2
     assert proc.stderr.strip() == (
         f"contact: error: {bad}: motion.sped: unknown key; did you mean 'speed'? "
-        "(allowed: load, speed, velocity, friction, direction)")
+        "(allowed: load, speed, velocity, friction, direction, tangential_load, creepage, "
+        "rolling)")
     assert proc.stdout == "" and not (tmp_path / "contact-out").exists()
     broken = tmp_path / "broken.toml"
     broken.write_text("[motion]\nload = 0.01\nspeed = [0.3,\n")

@@ -31,7 +31,9 @@ tabulated (OUTSIDE_REFS, NEAR_END_REFS; SIE_TEST_RECOMPUTE_REFS=1 computes them 
 from __future__ import annotations
 
 import functools
+import json
 import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -43,6 +45,31 @@ A, B = 0.7, 1.0          # cot(pi alpha0) = -a/b
 BREAK = 0.3
 TOTAL = 0.4              # int psi for kappa = 1
 DPS = 30                 # reference working precision (phi_ref)
+# phi_ref at the points the tests ask for, and the kappa = -1 shift, stored (their mpmath
+# quadratures took ~5 s a case); SIE_TEST_RECOMPUTE_REFS=1 computes them again and rewrites
+# the file, and a value not in it is computed and added
+_REFS_PATH = Path(__file__).resolve().parent.parent / "reference" / "breaks_phi_refs.json"
+_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
+_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
+_NEW = {}
+
+
+def _stored(key, compute):
+    """The stored mpmath value of ``key``, or compute() (a float) kept for the file."""
+    if key in _REFS:
+        return _REFS[key]
+    value = float(compute())
+    _REFS[key] = _NEW[key] = value
+    return value
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _write_new_references():
+    """Values computed in this run are written back to the file at the end of the module."""
+    yield
+    if _NEW:
+        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
+
 OUTER_DPS = 20           # outer integral of the Cauchy-transform reference
 TOL = 1e-10              # required accuracy with breaks (absolute; |phi| ~ 0.4 .. 1.5)
 
@@ -132,18 +159,26 @@ class Reference:
     """phi of the exact solution by the Muskhelishvili inversion formula (module docstring)."""
 
     def __init__(self, left, right, rhs):
-        self.left, self.right = left, right
+        self.left, self.right, self.rhs = left, right, rhs
         self.f_np, self.f_mp, self.breaks = RHS[rhs]
+        self._shift = None
         with mp.workdps(DPS):
             self.alpha, self.beta, self.kappa = _exponents(left, right)
-            self.shift = mpf(0)
-            if self.kappa == -1:   # subtract the weighted mean: int g w^{-1} = 0
-                num = int_weighted(-self.beta, -self.alpha, self.f_mp, self.breaks)
-                den = int_weighted(-self.beta, -self.alpha, lambda t: mpf(1), self.breaks)
-                self.shift = num / den
             self.mu0 = mpf(2) ** (self.alpha + self.beta + 1) * mp.beta(self.alpha + 1, self.beta + 1)
-        self.shift_f = float(self.shift)
+        self.shift_f = _stored(f"{left}|{right}|{rhs}|shift", lambda: self.shift)
         self._cache = {}
+
+    @property
+    def shift(self):
+        """The weighted mean of f taken out where kappa = -1 (int g w^{-1} = 0), in mpmath."""
+        if self._shift is None:
+            with mp.workdps(DPS):
+                self._shift = mpf(0)
+                if self.kappa == -1:
+                    num = int_weighted(-self.beta, -self.alpha, self.f_mp, self.breaks)
+                    den = int_weighted(-self.beta, -self.alpha, lambda t: mpf(1), self.breaks)
+                    self._shift = num / den
+        return self._shift
 
     def g_np(self, s):
         return self.f_np(s) - self.shift_f
@@ -172,7 +207,10 @@ class Reference:
         return val
 
     def phi(self, xs):
-        return np.array([float(self.phi_mp(x)) for x in np.asarray(xs, float)])
+        """phi_ref at the points xs (floats; the stored values where the file has them)."""
+        return np.array([_stored(f"{self.left}|{self.right}|{self.rhs}|{float(x)!r}",
+                                 lambda x=x: self.phi_mp(x))
+                         for x in np.asarray(xs, float)])
 
     def cauchy_outside(self, x):
         """(1/pi) int w phi_ref / (t - x) dt for |x| > 1 (nested tanh-sinh)."""
