@@ -44,6 +44,7 @@ import math
 
 from .errors import ContactInputError, FrictionError, LoadError, check_finite
 from .punches import ProfilePunch
+from .result import ContactResult
 
 __all__ = ["CoupledPartialSlipError", "PartialSlipResult", "check_decoupled",
            "stick_load", "tilted_face"]
@@ -173,6 +174,25 @@ class PartialSlipResult:
         return self.full.ends
 
     @property
+    def zone_scale(self) -> float:
+        """The largest half-width of the contact zones (:attr:`ContactResult.zone_scale`)."""
+        return self.full.zone_scale
+
+    @property
+    def singular_ends(self) -> tuple:
+        """The contact's singular ends (:attr:`ContactResult.singular_ends`)."""
+        return self.full.singular_ends
+
+    @property
+    def material(self):
+        """The half-space's material."""
+        return self.full.material
+
+    @property
+    def _has_out_of_plane(self) -> bool:
+        return self.full._has_out_of_plane
+
+    @property
     def stick_zones(self) -> tuple:
         """The stick zones (each with ``ends``): the contact zones at P*; at Q = 0 the
         contact zones themselves."""
@@ -229,6 +249,9 @@ class PartialSlipResult:
                  getattr(out, k) - (getattr(with_q, k) - getattr(without, k))
                  for k in _COMPONENTS]
         return StressField(out.X, out.Y, *parts)
+
+    # the extrema of the field under the surface: ContactResult's search, on this stress
+    stress_extrema = ContactResult.stress_extrema
 
 
 _COMPONENTS = ("sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "sigma_yz", "sigma_xz")

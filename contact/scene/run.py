@@ -324,8 +324,8 @@ class _PartialSlipView:
     """A :class:`contact.PartialSlipResult` as :func:`_case_result` reads a ContactResult:
     the zones, ends, exponents, SIFs and diagnostics are those of the contact at P
     (``full``: the pressure is the frictionless one, the pair decoupling); the tractions, the
-    surface stress and the stresses under the surface (and so their extrema, by
-    :meth:`contact.ContactResult.stress_extrema`'s search on them) the partial slip's."""
+    surface stress and the stresses under the surface and their extrema the partial
+    slip's."""
 
     def __init__(self, result):
         self._slip = result
@@ -345,7 +345,8 @@ class _PartialSlipView:
     def stress(self, X, Y):
         return self._slip.stress(X, Y)
 
-    stress_extrema = contact.ContactResult.stress_extrema
+    def stress_extrema(self, *args, **kwargs):
+        return self._slip.stress_extrema(*args, **kwargs)
 
 
 def slip_entry(result) -> dict:

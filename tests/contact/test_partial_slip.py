@@ -189,3 +189,16 @@ def test_the_orthotropic_tangential_compliance_is_the_stroh_response(C, c):
                                              C44=0.6, C55=0.6, rho=1.0)
     T = contact.surface_constants(o, c).tangential_compliance
     assert T == pytest.approx(float(A.surface_response(c).slope_hilbert[0, 0]), rel=1e-12)
+
+
+def test_the_extrema_under_the_surface_are_those_of_the_superposed_field():
+    """PartialSlipResult.stress_extrema searches its own stress: the largest max_shear it
+    reports is the field's value at the point it names, and the tangential load moves it
+    toward the surface (Hertz's 0.300 p0 at 0.786 a without it)."""
+    r = solve(0.004)
+    ext = r.stress_extrema()
+    peak = ext.max_shear
+    f = r.stress(peak.X, peak.Y)
+    assert float(f.max_shear) == pytest.approx(peak.value, rel=1e-9)
+    a, p0 = r.ends[1], float(r.pressure(0.0))
+    assert peak.value > 0.300 * p0 and abs(peak.Y) < 0.786 * a
