@@ -31,12 +31,11 @@ tabulated (OUTSIDE_REFS, NEAR_END_REFS; SIE_TEST_RECOMPUTE_REFS=1 computes them 
 from __future__ import annotations
 
 import functools
-import json
 import os
-from pathlib import Path
 
 import numpy as np
 import pytest
+from _stored import StoredReferences
 from mpmath import mp, mpf
 
 import sie
@@ -48,27 +47,15 @@ DPS = 30                 # reference working precision (phi_ref)
 # phi_ref at the points the tests ask for, and the kappa = -1 shift, stored (their mpmath
 # quadratures took ~5 s a case); SIE_TEST_RECOMPUTE_REFS=1 computes them again and rewrites
 # the file, and a value not in it is computed and added
-_REFS_PATH = Path(__file__).resolve().parent.parent / "reference" / "breaks_phi_refs.json"
-_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
-_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
-_NEW = {}
-
-
-def _stored(key, compute):
-    """The stored mpmath value of ``key``, or compute() (a float) kept for the file."""
-    if key in _REFS:
-        return _REFS[key]
-    value = float(compute())
-    _REFS[key] = _NEW[key] = value
-    return value
+_REFS = StoredReferences("breaks_phi_refs.json")
+_stored = _REFS.real
 
 
 @pytest.fixture(autouse=True, scope="module")
 def _write_new_references():
     """Values computed in this run are written back to the file at the end of the module."""
     yield
-    if _NEW:
-        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
+    _REFS.write()
 
 OUTER_DPS = 20           # outer integral of the Cauchy-transform reference
 TOL = 1e-10              # required accuracy with breaks (absolute; |phi| ~ 0.4 .. 1.5)

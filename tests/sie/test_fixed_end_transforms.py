@@ -21,38 +21,22 @@ SIE_TEST_RECOMPUTE_REFS=1 computes them again and rewrites the file.
 """
 from __future__ import annotations
 
-import json
-import os
-from pathlib import Path
-
 import mpmath as mp
 import numpy as np
 import pytest
+from _stored import StoredReferences
 
 import sie
 from sie.fixed_ends import hilbert_images
 
-_REFS_PATH = Path(__file__).resolve().parent.parent / "reference" / \
-    "fixed_end_transform_refs.json"
-_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
-_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
-_NEW = {}
-
-
-def _stored(key, compute):
-    """The stored mpmath value of ``key`` ([re, im]), or compute() kept for the file."""
-    if key in _REFS:
-        return complex(*_REFS[key])
-    v = complex(compute())
-    _REFS[key] = _NEW[key] = [v.real, v.imag]
-    return v
+_REFS = StoredReferences("fixed_end_transform_refs.json")
+_stored = _REFS.complex
 
 
 @pytest.fixture(autouse=True, scope="module")
 def _write_new_references():
     yield
-    if _NEW:
-        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
+    _REFS.write()
 
 
 # ---------------------------------------------------------------------------------------

@@ -17,15 +17,13 @@ References independent of the solver:
 """
 from __future__ import annotations
 
-import json
 import math
-import os
 import warnings
-from pathlib import Path
 
 import mpmath as mp
 import numpy as np
 import pytest
+from _stored import StoredReferences
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.polynomial import chebyshev as cheb
@@ -34,19 +32,8 @@ import sie
 from sie.junctions import _cross_images, junction_ratio
 
 
-_REFS_PATH = Path(__file__).resolve().parent.parent / "reference" / "junction_refs.json"
-_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
-_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
-_NEW = {}
-
-
-def _stored(key, compute):
-    """The stored mpmath value of ``key``, or compute() (a float) kept for the file."""
-    if key in _REFS:
-        return _REFS[key]
-    value = float(compute())
-    _REFS[key] = _NEW[key] = value
-    return value
+_REFS = StoredReferences("junction_refs.json")
+_stored = _REFS.real
 
 
 @pytest.fixture(autouse=True, scope="module")
@@ -54,8 +41,7 @@ def _write_new_references():
     """Values computed in this run (a new case, or SIE_TEST_RECOMPUTE_REFS=1) are written
     back to the file at the end of the module."""
     yield
-    if _NEW:
-        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
+    _REFS.write()
 
 
 @pytest.fixture(autouse=True)

@@ -18,35 +18,20 @@ rewrites the file.  Points: inside, 1e-6 (relative to h) from the ends, at the e
 """
 from __future__ import annotations
 
-import json
-import os
-from pathlib import Path
-
 import mpmath as mp
 import numpy as np
 import pytest
+from _stored import StoredReferences
 
 import sie
 from sie.systems import solve_system
 
-_REFS_PATH = (Path(__file__).resolve().parent.parent / "reference"
-              / "system_log_potential_refs.json")
-_RECOMPUTE = os.environ.get("SIE_TEST_RECOMPUTE_REFS") == "1"
-_REFS = {} if _RECOMPUTE or not _REFS_PATH.exists() else json.loads(_REFS_PATH.read_text())
-_NEW = {}
+_REFS = StoredReferences("system_log_potential_refs.json")
+_stored = _REFS.complex
 
 #: local points v = (x - m)/h of every class
 V_LOCAL = (0.3, -0.55, 1.0 - 1e-6, -1.0 + 1e-6, 1.0, -1.0, 1.0 + 1e-6, -1.25, 2.05, -20.0,
            5e4)
-
-
-def _stored(key, compute):
-    """The stored mpmath value of ``key`` ([re, im]), or compute() kept for the file."""
-    if key in _REFS:
-        return complex(*_REFS[key])
-    value = complex(compute())
-    _REFS[key] = _NEW[key] = [value.real, value.imag]
-    return value
 
 
 @pytest.fixture(autouse=True, scope="module")
@@ -54,8 +39,7 @@ def _write_new_references():
     """Values computed in this run (a new case, or SIE_TEST_RECOMPUTE_REFS=1) are written
     back to the file at the end of the module."""
     yield
-    if _NEW:
-        _REFS_PATH.write_text(json.dumps(dict(sorted(_REFS.items())), indent=0) + "\n")
+    _REFS.write()
 
 
 @pytest.fixture(autouse=True)
