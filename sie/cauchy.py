@@ -335,6 +335,20 @@ def evaluation_points(z, intervals, name="z"):
     return z, cplx
 
 
+def limit_points(x, side, intervals):
+    """x checked for the one-sided limits C(x + i0 side) of the Cauchy transform: ``side``
+    +1 or -1, x real, finite and not at an end (:func:`evaluation_points`).  Returns the
+    float array."""
+    from .errors import EvaluationPointError
+    if isinstance(side, bool) or side not in (1, -1):
+        raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
+                                   f"got {side!r}")
+    if np.asarray(x).dtype.kind == "c":
+        raise EvaluationPointError("x must be real (the limits are taken on the real "
+                                   "line; use cauchy() at complex points); got complex")
+    return evaluation_points(x, intervals, "x")[0]
+
+
 # --------------------------------------------------------------------------
 # logarithmic potential
 # --------------------------------------------------------------------------

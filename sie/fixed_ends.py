@@ -68,8 +68,7 @@ import numpy as np
 from scipy.special import gamma, hyp2f1, rgamma
 
 from .assembly import probe_kernel
-from .errors import (EvaluationPointError, InconsistentEquationWarning,
-                     InvalidEndConditionError, ResidualWarning,
+from .errors import (InconsistentEquationWarning, InvalidEndConditionError, ResidualWarning,
                      SideConditionError, UnsupportedEquationError, call_checked,
                      check_finite_real, check_order)
 from .exponents import Exponents, check_explicit_exponent, is_explicit
@@ -1245,14 +1244,8 @@ class FixedEndSolution(Solution):
         >>> bool(abs(F.imag[0] - 1.5 ** 0.3) < 1e-12)      # psi = (1 + x)^0.3
         True
         """
-        from .cauchy import evaluation_points
-        if isinstance(side, bool) or side not in (1, -1):
-            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
-                                       f"got {side!r}")
-        if np.asarray(x).dtype.kind == "c":
-            raise EvaluationPointError("x must be real (the limits are taken on the real "
-                                       "line; use cauchy() at complex points); got complex")
-        x, _ = evaluation_points(x, self.intervals, "x")
+        from .cauchy import limit_points
+        x = limit_points(x, side, self.intervals)
         return self.cauchy(x) + 1j * side * self(x)
 
     def log_potential(self, x):

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .cauchy import (_FAR_SERIES_MAX_N, _far_series_table, cauchy_series, evaluation_points,
+                     limit_points,
                      l0_beside, log_potential_series)
 from .errors import EvaluationPointError, InvalidOrderError, call_checked, real_array
 from .exponents import Exponents
@@ -650,13 +651,7 @@ class Solution:
         >>> round(float(F.real[0]), 12), round(float(F.imag[0]) ** 2, 12)   # H = -s, psi^2
         (-0.5, 0.75)
         """
-        if isinstance(side, bool) or side not in (1, -1):
-            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
-                                       f"got {side!r}")
-        if np.asarray(x).dtype.kind == "c":
-            raise EvaluationPointError("x must be real (the limits are taken on the real "
-                                       "line; use cauchy() at complex points); got complex")
-        x, _ = evaluation_points(x, self.intervals, "x")     # finite, not at an end
+        x = limit_points(x, side, self.intervals)
         flat = x.ravel()
         out = np.zeros(flat.shape, dtype=complex)
         for p in self.pieces:

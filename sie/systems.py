@@ -126,6 +126,7 @@ from .errors import (CallableOutputError, EvaluationPointError, InconsistentEqua
                      InvalidCoefficientError, InvalidEndConditionError, InvalidIntervalError,
                      InvalidOrderError, SideConditionError, SIEWarning, UnsupportedEquationError,
                      check_finite_real, check_order, is_number)
+from .cauchy import limit_points
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde,
@@ -1320,18 +1321,9 @@ class SystemSolution:
         >>> bool(np.allclose(F, sol.cauchy(x) - 1j * sol(x), rtol=0, atol=1e-14))
         True
         """
-        if isinstance(side, bool) or side not in (1, -1):
-            raise EvaluationPointError(f"side must be +1 (from above) or -1 (from below), "
-                                       f"got {side!r}")
-        x = np.asarray(x)
-        if x.dtype.kind == "c":
-            raise EvaluationPointError("x must be real (the limits are taken on the real "
-                                       "line; use cauchy() at complex points); got complex")
-        if not np.isfinite(x).all():
-            raise EvaluationPointError("x must be finite real points")
         c, d = self.interval
-        xf = np.asarray(x, dtype=float)
-        out = self.cauchy(xf).astype(complex)          # refuses the ends
+        xf = limit_points(x, side, [(c, d)])
+        out = self.cauchy(xf).astype(complex)
         inside = (xf > c) & (xf < d)
         if inside.any():
             out[:, inside] += side * 1j * self(xf[inside])
