@@ -481,16 +481,20 @@ def graded_weight_rule(dist_left, dist_right, q, alpha, beta, graded_left, grade
     (ndarray, ndarray, ndarray)
         1 + v, 1 - v and the weights (w included).
     """
+    return _rule_on_edges(_edges(dist_left) if graded_left and dist_left < 1.0 else _WHOLE,
+                          _edges(dist_right) if graded_right and dist_right < 1.0 else _WHOLE,
+                          q, alpha, beta)
+
+
+_WHOLE = (0.0, 1.0)     # a half in one piece
+
+
+def _rule_on_edges(left_edges, right_edges, q, alpha, beta):
+    """The rule of :func:`graded_weight_rule` and :func:`further_rule` on the pieces between
+    the edges of each half (distances 0 .. 1 from its end, ascending), :func:`_piece` on
+    each: 1 + v, 1 - v (each from its own end) and the weights (w included)."""
     dls, drs, wts = [], [], []
-    for graded, d, left_side in ((graded_left, dist_left, True),
-                                 (graded_right, dist_right, False)):
-        edges = [0.0]                               # distances from this half's end
-        if graded and d < 1.0:
-            e = d
-            while e < 1.0:
-                edges.append(e)
-                e *= _RATIO
-        edges.append(1.0)
+    for edges, left_side in ((left_edges, True), (right_edges, False)):
         e_near, e_far = (beta, alpha) if left_side else (alpha, beta)
         for lo, hi in zip(edges[:-1], edges[1:]):
             near, far, wt = _piece(lo, hi, q, e_near, e_far)
@@ -790,16 +794,9 @@ def further_rule(q, alpha, beta, left_min, right_min):
     on that half, Gauss-Jacobi of the end's factor): g may have a branch point at the end
     (a further exponent, (1+v)^r) and be nearly singular beyond it on the scale of the
     graded pieces.  Returns 1 + v, 1 - v (each from its own end) and the weights."""
-    dls, drs, wts = [], [], []
-    for dmin, left_side in ((left_min, True), (right_min, False)):
-        edges = [0.0, 1.0] if dmin is None else _edges(min(dmin, 0.25))
-        e_near, e_far = (beta, alpha) if left_side else (alpha, beta)
-        for lo, hi in zip(edges[:-1], edges[1:]):
-            near, far, wt = _piece(lo, hi, q, e_near, e_far)
-            dls.append(near if left_side else far)
-            drs.append(far if left_side else near)
-            wts.append(wt)
-    return np.concatenate(dls), np.concatenate(drs), np.concatenate(wts)
+    return _rule_on_edges(_WHOLE if left_min is None else _edges(min(left_min, 0.25)),
+                          _WHOLE if right_min is None else _edges(min(right_min, 0.25)),
+                          q, alpha, beta)
 
 
 def _frame(end, dl, dr, alpha, beta):
