@@ -21,14 +21,6 @@ from sie.fixed_ends import graded_weight_rule, hilbert_images, kernel_term, weig
 from sie.intervals import Interval
 
 
-@pytest.fixture(autouse=True)
-def _mpmath_precision():
-    """These tests set mpmath's working precision; restore it for the rest of the suite."""
-    dps = mp.mp.dps
-    yield
-    mp.mp.dps = dps
-
-
 def edge_kernel(x, t):
     """(1/pi) k(x, t) of a crack normal to a free surface, x, t its distances from it."""
     u = t + x

@@ -62,13 +62,6 @@ import sie
 KOITER_F = 1.1215            # the edge crack, Tada, Paris & Irwin (2000), p. 8.1
 
 
-@pytest.fixture(autouse=True)
-def _mpmath_precision():
-    dps = mp.mp.dps
-    yield
-    mp.mp.dps = dps
-
-
 def dundurs(G, kappa1, kappa2):
     """Dundurs' alpha, beta with material 1 the cracked one, G = mu2/mu1."""
     den = G * (kappa1 + 1.0) + kappa2 + 1.0

@@ -44,14 +44,6 @@ def _write_new_references():
     _REFS.write()
 
 
-@pytest.fixture(autouse=True)
-def _mpmath_precision():
-    """These tests set mpmath's working precision; restore it for the rest of the suite."""
-    dps = mp.mp.dps
-    yield
-    mp.mp.dps = dps
-
-
 # ---------------------------------------------------------------------------------------
 # the local analysis
 # ---------------------------------------------------------------------------------------

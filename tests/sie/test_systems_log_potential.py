@@ -42,13 +42,6 @@ def _write_new_references():
     _REFS.write()
 
 
-@pytest.fixture(autouse=True)
-def _mpmath_precision():
-    dps = mp.mp.dps
-    yield
-    mp.mp.dps = dps
-
-
 def _points(c, d):
     m, h = 0.5 * (c + d), 0.5 * (d - c)
     x = np.array([m + h * v for v in V_LOCAL])
