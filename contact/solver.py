@@ -269,53 +269,49 @@ def _rolling(material, punch, load, speed, friction, direction, method, n, tol, 
         raise FrictionError("rolling needs friction > 0 (without friction nothing is "
                             "transmitted and there is no stick zone)")
 
-    def at(P, k, s):
-        face = tilted_face(punch, k) if k != 0.0 else punch
-        prob = replace(problem, punch=face, mu_f=s * friction)
-        return _solve_problem(prob, P, method, n, tol)
+    problems = {1.0: problem}       # by s = sign Q (mu_f = s mu, its kernel with it)
 
+    def at(P, face, s):
+        if s not in problems:
+            problems[s] = _problem(material, punch, speed, friction, -int(s), constants,
+                                   punch_material)
+        return _solve_problem(replace(problems[s], punch=face), P, method, n, tol)
+
+    def lead_end(r):
+        return r.zones[0].ends[0] if lead == 0 else r.zones[-1].ends[1]
+
+    sign = -1.0 if lead == 0 else 1.0      # a convex face's stick zone moves that way
     if creepage is None:
         P_star = stick_load(load, tangential_load, friction)
         Q = float(tangential_load)
-        s = 1.0 if Q > 0 else -1.0
-        full = at(load, 0.0, s)
-        if Q == 0.0:
-            return PartialSlipResult(replace(full, mu_f=0.0), None, 0.0, load, friction, 0.0)
-        edge = full.zones[0].ends[lead] if lead == 0 else full.zones[-1].ends[lead]
-        span = abs(float(punch.slope(full.ends[1])) - float(punch.slope(full.ends[0])))
-        sign = -1.0 if lead == 0 else 1.0      # a convex face's stick zone moves that way
-
-        def miss(k):
-            r = at(P_star, k, s)
-            return (r.zones[0].ends[0] - edge) if lead == 0 else (r.zones[-1].ends[1] - edge)
-        k = brentq(miss, 0.0, sign * span, xtol=1e-15 * max(span, 1e-300), rtol=4 * np.finfo(float).eps)
-        stick = at(P_star, k, s)
+        s = -1.0 if Q < 0 else 1.0
     else:
         xi = check_finite("creepage", creepage, ContactInputError)
-        full0 = at(load, 0.0, 1.0)
-        if xi == 0.0:
-            return PartialSlipResult(replace(full0, mu_f=0.0), None, 0.0, load, friction, 0.0)
-        edge = full0.zones[0].ends[lead] if lead == 0 else full0.zones[-1].ends[lead]
-        sign = -1.0 if lead == 0 else 1.0
         # xi = T s mu k / b with k of the sign that moves the stick zone to the leading end
         s = 1.0 if xi * b / T * sign > 0 else -1.0
+        Q = None if xi != 0.0 else 0.0
+    full = at(load, punch, s)       # the pressure does not depend on s (decoupled)
+    if Q == 0.0:
+        return PartialSlipResult(replace(full, mu_f=0.0), None, 0.0, load, friction, 0.0)
+    edge = lead_end(full)
+    if creepage is None:
+        span = abs(float(punch.slope(full.ends[1])) - float(punch.slope(full.ends[0])))
+        k = brentq(lambda k: lead_end(at(P_star, tilted_face(punch, k), s)) - edge, 0.0,
+                   sign * span, xtol=1e-15 * max(span, 1e-300), rtol=4 * np.finfo(float).eps)
+    else:
         k = xi * b / (T * s * friction)
-        full = at(load, 0.0, s)
-
-        def miss(P):
-            r = at(P, k, s)
-            return (r.zones[0].ends[0] - edge) if lead == 0 else (r.zones[-1].ends[1] - edge)
+        face = tilted_face(punch, k)    # one face (its scan) for every load tried
         try:
-            P_star = brentq(miss, 1e-12 * load, load, xtol=1e-15 * load, rtol=4 * np.finfo(float).eps)
+            P_star = brentq(lambda P: lead_end(at(P, face, s)) - edge, 1e-12 * load, load,
+                            xtol=1e-15 * load, rtol=4 * np.finfo(float).eps)
         except ValueError:
             raise FrictionError(
                 f"creepage = {xi!r} is beyond full slip for friction = {friction!r} at load = "
                 f"{load!r} (no stick zone at the leading edge): the rolling contact slides "
                 "everywhere") from None
-        stick = at(P_star, k, s)
         Q = s * friction * (load - P_star)
-    xi = T * s * friction * k / b
-    return PartialSlipResult(full, stick, Q, load, friction, xi)
+    stick = at(P_star, tilted_face(punch, k), s)
+    return PartialSlipResult(full, stick, Q, load, friction, T * s * friction * k / b)
 
 
 def solve_batch(material, punch, *, load, speed, friction=0.0, direction=-1,
