@@ -14,7 +14,13 @@ from sie.exponents import sie_exponents
 from sie.quadrature import WeightedRule, composite_weighted_rule
 from sie.special import jacobi_end_values, jacobi_moment_shifted
 
-mp.dps = 40
+
+
+@pytest.fixture(autouse=True)
+def _forty_digits():
+    """The references at 40 digits (tests/sie/conftest.py restores the precision after)."""
+    mp.dps = 40
+
 
 SHIFTS = [3.183098861837907e-09, 1e-12, 1e-4, 0.3, 1.0, 1.7]
 
