@@ -877,17 +877,33 @@ def _refine(face, eq, state, tol, punch, n_start):
         # the next doubling must fit one zone's cap and, for several zones, sie's dense
         # system (N_MAX_DENSE unknowns in all)
         last = 2 * eq2.n > _N_MAX or (len(zs) > 1 and 2 * eq2.n * len(zs) > N_MAX_DENSE)
-        if max(d_ends, d_p) <= tol or last:
-            if max(d_ends, d_p) > tol:
-                hint = ("; if the slope varies on a length scale much shorter than the contact, "
-                        "pass a larger n= (the error falls geometrically, at a rate set by that "
-                        "scale)")
-                if not punch.breaks:
-                    hint += ("; if it has a kink or a jump in a derivative, pass its X positions "
-                             "as breaks= (spectral instead of algebraic convergence)")
-                warnings.warn(f"contact.solve: n = {eq2.n} reached with a change of "
-                              f"{max(d_ends, d_p):.2g} (> tol = {tol:.2g}) between n and 2n{hint}",
-                              RuntimeWarning, stacklevel=4)
+        change = max(d_ends, d_p)
+        if change <= tol:
+            return new
+        # the ends cannot be fixed better than their side conditions' rounding allows: once
+        # n and 2n agree to that, a larger n only moves them within it
+        floor = ZoneEquations.end_uncertainty(zs, ts, J) / width
+        if change <= 2.0 * floor:
+            gaps = [b.c - a.d for a, b in zip(zs, zs[1:])]
+            where = (f"two zones {min(gaps):.2g} apart, about to merge" if gaps and
+                     min(gaps) < 0.01 * width else "ends close together: zones about to "
+                     "merge or split, or a zone just born")
+            warnings.warn(f"contact.solve: at load {state.load!r} the ends may be off by up to "
+                          f"~{floor:.1g} of the contact's width (tol = {tol:.2g}): the side "
+                          f"conditions that fix them are ill-conditioned there ({where}); n "
+                          f"= {eq.n} and {eq2.n} agree to {change:.2g}, and a larger n does "
+                          "not help", RuntimeWarning, stacklevel=4)
+            return new
+        if last:
+            hint = ("; if the slope varies on a length scale much shorter than the contact, "
+                    "pass a larger n= (the error falls geometrically, at a rate set by that "
+                    "scale)")
+            if not punch.breaks:
+                hint += ("; if it has a kink or a jump in a derivative, pass its X positions "
+                         "as breaks= (spectral instead of algebraic convergence)")
+            warnings.warn(f"contact.solve: n = {eq2.n} reached with a change of "
+                          f"{max(d_ends, d_p):.2g} (> tol = {tol:.2g}) between n and 2n{hint}",
+                          RuntimeWarning, stacklevel=4)
             return new
         eq, state = eq2, new
 

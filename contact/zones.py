@@ -328,6 +328,27 @@ class ZoneEquations:
             sol = self.solve(zones, totals)
         return zones, totals, sol, (None if J is None else J * scale[None, :])
 
+    @staticmethod
+    def end_uncertainty(zones, totals, jacobian, noise=_F_TOL):
+        """The largest error in an end (a length) that residuals at the rounding level
+        ``noise`` leave, by the Jacobian of :meth:`solve_ends` (of the scaled residuals with
+        respect to the unknowns): max over the ends of the row sums of abs(J^-1) times
+        ``noise``.  Small where the side conditions hold the ends firmly; large (abs(J^-1)
+        ~ 1/gap^2) where two ends are about to meet, as when two zones merge, where no n
+        fixes them better.  0 without free ends (nothing to fix)."""
+        if jacobian is None or jacobian.size == 0:
+            return 0.0
+        try:
+            inv = np.linalg.inv(jacobian)
+        except np.linalg.LinAlgError:
+            return math.inf
+        err = np.abs(inv).sum(axis=1) * noise
+        is_end = []
+        for z, t in zip(zones, totals):
+            is_end += [True] * ((z.left == FREE) + (z.right == FREE)) + [False] * (z.kappa == 1)
+        err = err[np.array(is_end, dtype=bool)]
+        return float(err.max()) if err.size else 0.0
+
     def _fd_jacobian(self, x, F, zones, totals, lo, hi, norms, raw):
         steps = self._fd_steps(zones, totals)
         J = np.empty((F.size, x.size))
