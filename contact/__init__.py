@@ -17,6 +17,7 @@ from .errors import (CauchyTransformError, ContactInputError, ContactLossError,
                      DirectionError, FrictionError, LoadError, MaterialError,
                      NearRayleighWarning, ProfileCallableError, PunchGeometryError, SpeedError,
                      StressPointError, UnboundedStressError)
+from .fretting import FrettingCycle, FrettingState, fretting_cycle
 from .material import Isotropic, Orthotropic, zhou2014
 from .partial_slip import CoupledPartialSlipError, PartialSlipResult
 from .protocol import Material, MaterialModes, SurfaceKernel
@@ -34,7 +35,8 @@ __all__ = [
     "relative_speed",
     "Punch", "FlatPunch", "TriangularPunch", "ParabolicPunch", "CylindricalPunch", "ProfilePunch",
     "solve", "solve_batch", "load_curve", "ContactResult", "ContactZone", "LoadCurve", "Event",
-    "PartialSlipResult", "CoupledPartialSlipError",
+    "PartialSlipResult", "CoupledPartialSlipError", "fretting_cycle", "FrettingCycle",
+    "FrettingState",
     "contact_length",
     "StressField", "StressExtrema", "Extremum", "half_space_stress",
     "ContactInputError", "MaterialError", "SpeedError", "LoadError", "FrictionError",

@@ -16,7 +16,9 @@ Solids Struct. 35 (1998) 2349; Jager, J. Appl. Mech. 65 (1998) 1037)
 p(X; P*) the pressure of the same face at the smaller load P*: Hc[p(.; P*)] = H'/b on its
 own contact, which is where Hc[p(.; P)] = H'/b too, so Hc[q] = 0 there; its contact is the
 stick zone (inside the full contact: the zones grow with the load), and q = s mu p beyond
-it.  For two cylinders this is Cattaneo's c/a = sqrt(1 - abs(Q)/(mu P)).
+it.  For two cylinders this is Cattaneo's c/a = sqrt(1 - abs(Q)/(mu P)).  The cyclic
+history (unloading, reversal, the hysteresis loop and the energy per cycle) follows from the
+same correctives: :mod:`contact.fretting`.
 
 Steady rolling (Carter 1926; quasi-static: the bodies roll at speed 0 in the frame of the
 contact, ``rolling=True``): in the stick zone the two surfaces move together while the
@@ -47,7 +49,7 @@ from .punches import ProfilePunch
 from .result import ContactResult
 
 __all__ = ["CoupledPartialSlipError", "PartialSlipResult", "check_decoupled",
-           "stick_load", "tilted_face"]
+           "slip_stretches", "stick_load", "tilted_face"]
 
 #: abs(N12*), abs(M12*) below this fraction of abs(N11*) count as decoupled (beta = 0).
 DECOUPLED_TOLERANCE = 1e-12
@@ -201,18 +203,7 @@ class PartialSlipResult:
     @property
     def slip_zones(self) -> tuple:
         """(lo, hi) of each stretch of the contact outside the stick zones, left to right."""
-        out = []
-        stick = [z.ends for z in self.stick_zones]
-        for z in self.full.zones:
-            lo, hi = z.ends
-            inner = sorted((a, b) for a, b in stick if lo <= a and b <= hi)
-            for a, b in inner:
-                if a > lo:
-                    out.append((lo, a))
-                lo = b
-            if hi > lo:
-                out.append((lo, hi))
-        return tuple(out)
+        return slip_stretches(self.full.zones, self.stick_zones)
 
     # -- tractions ----------------------------------------------------------------------
     def pressure(self, X):
@@ -252,6 +243,24 @@ class PartialSlipResult:
 
     # the extrema of the field under the surface: ContactResult's search, on this stress
     stress_extrema = ContactResult.stress_extrema
+
+
+def slip_stretches(zones, stick_zones) -> tuple:
+    """(lo, hi) of each stretch of the contact ``zones`` outside the ``stick_zones`` (each
+    with ``ends``, each inside a contact zone: the contacts grow with the load), left to
+    right."""
+    out = []
+    stick = [z.ends for z in stick_zones]
+    for z in zones:
+        lo, hi = z.ends
+        inner = sorted((a, b) for a, b in stick if lo <= a and b <= hi)
+        for a, b in inner:
+            if a > lo:
+                out.append((lo, a))
+            lo = b
+        if hi > lo:
+            out.append((lo, hi))
+    return tuple(out)
 
 
 _COMPONENTS = ("sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "sigma_yz", "sigma_xz")
