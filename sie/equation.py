@@ -601,8 +601,8 @@ def _is_matrix(v):
 
 def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol):
     """:func:`solve` with m x m coefficients: :func:`sie.systems.solve_system` (one interval,
-    no kernel, no breaks, a given n)."""
-    for name, given in (("kernel", kernel is not None), ("breaks", bool(np.size(breaks))),
+    no breaks, a given n)."""
+    for name, given in (("breaks", bool(np.size(breaks))),
                         ('n="auto"', isinstance(n, str) or tol is not None)):
         if given:
             raise UnsupportedEquationError(
@@ -616,7 +616,8 @@ def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol
                 f"a system (m x m a and b) is solved on one interval, got {len(ivs)}")
         interval = tuple(ivs[0])
     a = np.zeros(np.shape(b)) if np.ndim(a) == 0 and a == 0 else a
-    return solve_system(f, a, b, n=n, left=left, right=right, total=total, interval=interval)
+    return solve_system(f, a, b, n=n, left=left, right=right, total=total, interval=interval,
+                        kernel=kernel)
 
 
 def _touching(intervals):
@@ -677,8 +678,9 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         Coefficients, shared or one per interval; b != 0.  cot(pi alpha0) = -a/b fixes the
         exponents.  Square matrices A, B (B invertible; a scalar 0 for A = 0) make it a
         system of m equations in psi = (psi_1 .. psi_m), solved by
-        :func:`sie.solve_system` (one interval, no kernel or breaks, a given n; f returns
-        shape (m, len(s)), ``left``/``right`` per mode, ``total`` per mode of index 1).
+        :func:`sie.solve_system` (one interval, no breaks, a given n; f returns shape
+        (m, len(s)), ``left``/``right`` per mode, ``total`` per mode of index 1; a kernel
+        returns shape (m, m) + the shape of s).
     n : int, sequence of int, or "auto"
         Number of Jacobi coefficients of phi per interval (>= 2 where kappa = 1), at most
         ``N_MAX``.  "auto": chosen per interval, from 16 doubling until the series' tail
@@ -698,7 +700,8 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         ~N^-4.5.
     kernel : callable or sequence of callables, optional
         Kernel k(s, t), vectorised over two arrays of equal shape, bounded on L x L (one
-        per interval: the kernel of the equation collocated there).
+        per interval: the kernel of the equation collocated there).  For a system, one
+        kernel returning the m x m matrix K(s, t), shape (m, m) + the shape of s.
     total : float or sequence, optional
         int psi over each interval with kappa = 1 (both ends singular); None (or absent)
         for the others.

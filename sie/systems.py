@@ -5,7 +5,9 @@ interval, by decoupling into modes with real or complex end exponents.
     psi = (psi_1, ..., psi_m),  A, B real m x m constant, B invertible.        (1)
 
 The interval is mapped onto [-1, 1] (the Cauchy integral is invariant under s = m + h u), so
-everything below is on [-1, 1]; H[phi](s) = (1/pi) PV int phi(t)/(t - s) dt.
+everything below is on [-1, 1]; H[phi](s) = (1/pi) PV int phi(t)/(t - s) dt.  A regular
+kernel, + int K(s, t) psi(t) dt on the left, couples the modes below into one linear
+system: :mod:`sie.system_kernel`.
 
 **Decoupling** (Muskhelishvili 1953, ch. 18 for systems; Erdogan, Gupta & Cook 1973).
 Multiply (1) by B^{-1} and diagonalise B^{-1} A = V diag(lambda) V^{-1}.  With phi = V^{-1} psi
@@ -131,6 +133,8 @@ from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde,
                      recurrence_coefficients)
+from .system_kernel import (KERNEL_EXTRA, kernel_modes, probe_kernel, projection_matrix,
+                            weighted_rule)
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
            "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off", "mode_log_potential",
@@ -986,8 +990,9 @@ def _totals(total, exps, m):
     return idx, [check_finite_real(f"total[{i}]", vals[i], SideConditionError) for i in idx]
 
 
-def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
-    """Solve A psi + (B/pi) PV int_c^d psi(t)/(t - s) dt = f(s) for psi = (psi_1..psi_m).
+def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0), kernel=None):
+    """Solve A psi + (B/pi) PV int_c^d psi(t)/(t - s) dt [+ int_c^d K(s, t) psi(t) dt] = f(s)
+    for psi = (psi_1..psi_m).
 
     Parameters
     ----------
@@ -1007,6 +1012,11 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
         singular), None for the others.
     interval : (c, d), optional
         Default (-1, 1).
+    kernel : callable, optional
+        A regular kernel K(s, t), a real m x m matrix of functions bounded on [c, d]^2:
+        called with arrays s, t of one shape it returns shape (m, m) + that shape
+        (``kernel(s, t)[i, j]`` multiplies psi_j in equation i).  The modes then couple and
+        are solved together (:mod:`sie.system_kernel`).
 
     Returns
     -------
@@ -1027,7 +1037,12 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
     InvalidIntervalError
         ``interval`` not a finite (c, d) with c < d.
     CallableOutputError
-        f not callable, raising, or not returning finite real values of shape (m, N).
+        f not callable, raising, or not returning finite real values of shape (m, N); the
+        kernel raising or not returning finite real values of shape (m, m) + shape.
+    KernelSingularityError
+        A kernel that grows without bound toward a corner of [c, d]^2.
+    UnsupportedEquationError
+        A kernel that makes the collocation system singular (an eigenvalue of the equation).
 
     Warns
     -----
@@ -1075,6 +1090,12 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
     c, d = _check_interval(interval)
     idx, tvals = _totals(total, exps, m)
     mid, h = 0.5 * (c + d), 0.5 * (d - c)
+    mu0 = np.array([_mu0(e) for e in exps])
+    if kernel is not None:
+        coeffs, consistency, scales = _coefficients_with_kernel(f, kernel, modes, exps, n, idx,
+                                                                tvals, mu0, c, d)
+        _warn_inconsistent(modes, consistency, scales)
+        return _finish(modes, exps, coeffs, consistency, (c, d), n, mu0)
 
     # sample f once at the nodes of all modes (conjugate modes share theirs)
     rules = [_projector(n - e.kappa, e.alpha, e.beta) for e in exps]
@@ -1091,7 +1112,7 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
     F = _call_f(f, mid + h * u_all, m)
     G = modes.project @ F                      # g = V^-1 B^-1 f at every node
 
-    coeffs, consistency = [], []
+    coeffs, consistency, scales = [], [], []
     for k, (e, (x, proj), st) in enumerate(zip(exps, rules, starts)):
         g = G[k, st:st + x.size]
         dk = proj(g)
@@ -1104,19 +1125,11 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
             consistency.append(None)
         else:
             ck = fac * dk[1:]
-            cons = complex(dk[0])
-            consistency.append(cons)
-            scale = float(np.max(np.abs(g)))
-            if abs(cons) > _CONSISTENCY_TOL * max(scale, 1e-300):
-                warnings.warn(
-                    f"solve_system: mode {k} (lambda = {modes.lambdas[k]:.6g}) has both ends "
-                    f"bounded (index -1) and its data violate the solvability condition: "
-                    f"consistency = {abs(cons):.3g} (max|g| = {scale:.3g}); the returned psi "
-                    "solves the system with that part taken out", InconsistentEquationWarning,
-                    stacklevel=2)
+            consistency.append(complex(dk[0]))
+        scales.append(float(np.max(np.abs(g))))
         coeffs.append(ck.astype(complex))
+    _warn_inconsistent(modes, consistency, scales)
 
-    mu0 = np.array([_mu0(e) for e in exps])
     if idx:
         ones = [k for k, e in enumerate(exps) if e.kappa == 1]
         others = [k for k, e in enumerate(exps) if e.kappa != 1]
@@ -1131,9 +1144,84 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
         x0 = np.linalg.solve(Msys, np.asarray(tvals) / h - known)
         for k, v in zip(ones, x0):
             coeffs[k][0] = v
+    return _finish(modes, exps, coeffs, consistency, (c, d), n, mu0)
+
+
+def _warn_inconsistent(modes, consistency, scales):
+    """InconsistentEquationWarning for each mode of index -1 whose solvability residual
+    exceeds _CONSISTENCY_TOL of its data's size."""
+    for k, (cons, scale) in enumerate(zip(consistency, scales)):
+        if cons is not None and abs(cons) > _CONSISTENCY_TOL * max(scale, 1e-300):
+            warnings.warn(
+                f"solve_system: mode {k} (lambda = {modes.lambdas[k]:.6g}) has both ends "
+                f"bounded (index -1) and its data violate the solvability condition: "
+                f"consistency = {abs(cons):.3g} (max|g| = {scale:.3g}); the returned psi "
+                "solves the system with that part taken out", InconsistentEquationWarning,
+                stacklevel=3)
+
+
+def _coefficients_with_kernel(f, kernel, modes, exps, n, idx, tvals, mu0, c, d):
+    """The coefficients c_k of every mode, the consistencies of the modes of index -1 and
+    the sizes of their data, from the linear system (3) of :mod:`sie.system_kernel`."""
+    m = modes.m
+    mid, h = 0.5 * (c + d), 0.5 * (d - c)
+    probe_kernel(kernel, m, c, d)
+    projections = [projection_matrix(n - e.kappa, e.alpha, e.beta) for e in exps]
+    Q = n + KERNEL_EXTRA
+    rules = [weighted_rule(Q, n, e.alpha, e.beta) for e in exps]
+    xs = np.concatenate([x for x, _ in projections])
+    G = modes.project @ _call_f(f, mid + h * xs, m)          # g = V^-1 B^-1 f at the nodes
+    Kt = kernel_modes(kernel, modes, h, mid, xs, np.concatenate([y for y, _ in rules]))
+    M = np.zeros((m * n, m * n), dtype=complex)
+    R = np.zeros(m * n, dtype=complex)
+    solvability, scales = {}, []
+    row = start = 0
+    for k, (e, (x, Pr)) in enumerate(zip(exps, projections)):
+        N = x.size
+        nodes = slice(start, start + N)
+        start += N
+        block = np.concatenate([Kt[k, l, nodes, l * Q:(l + 1) * Q] @ Om
+                                for l, (_, Om) in enumerate(rules)], axis=1)
+        block = Pr @ block
+        j = np.arange(N)
+        keep = (j + e.kappa >= 0) & (j + e.kappa < n)        # the dominant identity (4)
+        block[j[keep], k * n + j[keep] + e.kappa] += -(2.0 ** -e.kappa) / e.sin
+        dk = Pr @ G[k, nodes]
+        scales.append(float(np.max(np.abs(G[k, nodes]))))
+        if e.kappa == -1:                 # the solvability row: left out, its residual kept
+            solvability[k] = (block[0], dk[0])
+            block, dk = block[1:], dk[1:]
+        M[row:row + block.shape[0]] = block
+        R[row:row + block.shape[0]] = dk
+        row += block.shape[0]
+    if idx:
+        ones = [k for k, e in enumerate(exps) if e.kappa == 1]
+        if not np.linalg.cond(modes.vectors[np.ix_(idx, ones)] * mu0[ones]) < 1e12:
+            raise SideConditionError(
+                f"the totals given (components {idx}) do not fix the null space of the modes of "
+                f"index 1 (modes {ones}): their rows of V are dependent; give other components")
+        for i, t in zip(idx, tvals):        # int psi_i = h sum_k V_ik mu0_k c_k0
+            M[row, ::n] = modes.vectors[i] * mu0
+            R[row] = t / h
+            row += 1
+    try:
+        C = np.linalg.solve(M, R)
+    except np.linalg.LinAlgError:
+        raise UnsupportedEquationError(
+            "the collocation system of the equation with this kernel is singular: the "
+            "homogeneous equation has a nontrivial solution (an eigenvalue of the kernel), "
+            "so the solution is not unique") from None
+    coeffs = [C[k * n:(k + 1) * n].copy() for k in range(m)]
+    consistency = [None if e.kappa != -1 else complex(solvability[k][1] - solvability[k][0] @ C)
+                   for k, e in enumerate(exps)]
+    return coeffs, consistency, scales
+
+
+def _finish(modes, exps, coeffs, consistency, interval, n, mu0):
+    """The SystemSolution, its imaginary part measured (and warned of)."""
     for ck in coeffs:
         ck.flags.writeable = False
-    sol = SystemSolution(modes, exps, tuple(coeffs), tuple(consistency), (c, d), n, mu0)
+    sol = SystemSolution(modes, exps, tuple(coeffs), tuple(consistency), interval, n, mu0)
     # the imaginary part of V phi, which is rounding for real data
     vals = sol._modal(_CHECK_POINTS)
     psi = modes.vectors @ vals
@@ -1143,7 +1231,7 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0)):
     if imag > _IMAG_WARN:
         warnings.warn(f"solve_system: psi = V phi has a relative imaginary part {imag:.3g} "
                       "(rounding would leave ~1e-15); the returned real part is suspect",
-                      SIEWarning, stacklevel=2)
+                      SIEWarning, stacklevel=3)
     return sol
 
 

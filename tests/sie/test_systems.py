@@ -335,7 +335,6 @@ def test_solve_with_matrix_coefficients_is_the_system():
 
 
 @pytest.mark.parametrize("extra,match", [
-    (dict(kernel=lambda s, t: s * t), "no kernel"),
     (dict(breaks=(0.2,)), "no breaks"),
     (dict(n="auto"), 'no n="auto"'),
     (dict(intervals=[(-1.0, -0.5), (0.0, 1.0)]), "one interval, got 2"),
