@@ -126,13 +126,15 @@ from scipy import special as sp_special
 
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
                      InvalidCoefficientError, InvalidEndConditionError, InvalidIntervalError,
-                     InvalidOrderError, SideConditionError, SIEWarning, UnsupportedEquationError,
+                     InvalidOrderError, ResidualWarning, SideConditionError, SIEWarning,
+                     UnsupportedEquationError,
                      check_finite_real, check_order, is_number)
 from .cauchy import limit_points
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde,
                      recurrence_coefficients)
+from .solver import RESIDUAL_TOL
 from .system_kernel import (KERNEL_EXTRA, kernel_modes, probe_kernel, projection_matrix,
                             weighted_rule)
 
@@ -1170,8 +1172,10 @@ def _coefficients_with_kernel(f, kernel, modes, exps, n, idx, tvals, mu0, c, d):
     Q = n + KERNEL_EXTRA
     rules = [weighted_rule(Q, n, e.alpha, e.beta) for e in exps]
     xs = np.concatenate([x for x, _ in projections])
-    G = modes.project @ _call_f(f, mid + h * xs, m)          # g = V^-1 B^-1 f at the nodes
-    Kt = kernel_modes(kernel, modes, h, mid, xs, np.concatenate([y for y, _ in rules]))
+    # g = V^-1 B^-1 f at the nodes, and at the residual's check points after them
+    G = modes.project @ _call_f(f, mid + h * np.concatenate([xs, _CHECK_POINTS]), m)
+    ys = np.concatenate([y for y, _ in rules])
+    Kt = kernel_modes(kernel, modes, h, mid, np.concatenate([xs, _CHECK_POINTS]), ys)
     M = np.zeros((m * n, m * n), dtype=complex)
     R = np.zeros(m * n, dtype=complex)
     solvability, scales = {}, []
@@ -1214,7 +1218,34 @@ def _coefficients_with_kernel(f, kernel, modes, exps, n, idx, tvals, mu0, c, d):
     coeffs = [C[k * n:(k + 1) * n].copy() for k in range(m)]
     consistency = [None if e.kappa != -1 else complex(solvability[k][1] - solvability[k][0] @ C)
                    for k, e in enumerate(exps)]
+    _check_residual(modes, exps, coeffs, consistency, rules, Kt[:, :, xs.size:], G[:, xs.size:])
     return coeffs, consistency, scales
+
+
+def _check_residual(modes, exps, coeffs, consistency, rules, Kt, G):
+    """ResidualWarning where the modes' equations (2) of :mod:`sie.system_kernel`, at the
+    seven check points between the nodes, are not satisfied to RESIDUAL_TOL of their scale:
+    n does not resolve f or the kernel (the scalar solver's check, :mod:`sie.solver`).
+    ``Kt``, ``G``: the modal kernel and data at the check points."""
+    Q = rules[0][0].size
+    worst, scale = 0.0, float(np.max(np.abs(G)))
+    for k, (e, ck) in enumerate(zip(exps, coeffs)):
+        shifted = ck[1:] if e.kappa == 1 else (ck if e.kappa == 0 else
+                                               np.concatenate([[0.0], ck]))
+        lhs = jacobi_vandermonde(shifted.size, -e.alpha, -e.beta, _CHECK_POINTS) @ shifted \
+            * (-(2.0 ** -e.kappa) / e.sin)
+        for l, (_, Om) in enumerate(rules):
+            lhs = lhs + Kt[k, l, :, l * Q:(l + 1) * Q] @ (Om @ coeffs[l])
+        g = G[k] - (consistency[k] or 0.0)
+        scale = max(scale, float(np.max(np.abs(lhs))))
+        worst = max(worst, float(np.max(np.abs(g - lhs))))
+    worst /= max(scale, np.finfo(float).tiny)
+    if worst > RESIDUAL_TOL:
+        warnings.warn(
+            f"solve_system: the solution leaves a residual of {worst:.2g} (relative to f) in "
+            f"the equation between the collocation nodes: n = {coeffs[0].size} does not "
+            "resolve f or the kernel (increase n), or the kernel is not smooth",
+            ResidualWarning, stacklevel=4)
 
 
 def _finish(modes, exps, coeffs, consistency, interval, n, mu0):
