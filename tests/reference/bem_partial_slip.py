@@ -81,7 +81,9 @@ current q, then the tangential problem for the new p (a strictly convex box-cons
 min (1/2) q.(A/4)L q + c.q over |q| <= mu p, sum h q = Q, whose optimality conditions are
 the friction law with Delta s its gradient), each by its own active set (one change at a
 time if it cycles); after each sweep the joint linear system with the sweep's states is
-solved and accepted if it satisfies every condition.
+solved and accepted if it satisfies every condition.  Full sliding (q = +-mu p on the whole
+contact) is :meth:`Solver.sliding`: the library's equation N12* mu_f p + N11* Hc[p] = H'
+(``bem_reference`` solves the same discrete problem; the tests compare them).
 
 Discretisation
 --------------
@@ -497,6 +499,49 @@ class Solver:
             else:
                 st = new
         raise RuntimeError("tangential active set did not converge")
+
+    def sliding(self, P, eps, maxiter=200):
+        """Full sliding, q = eps mu p everywhere on the contact (Q = eps mu P; the upper body
+        slides toward -eps X): the normal LCP g = H - delta + (A/4)(L + eps beta mu S) p >= 0,
+        p >= 0, p g = 0, sum h p = P, by the active set of :meth:`_normal` (the friction
+        part (A/4) eps beta mu S is antisymmetric).  Returns a State (s, D undefined: nan)."""
+        k, h = self.k, self.h
+        K = k * (self.L + eps * self.beta * self.mu * self.S)
+        C = np.zeros(self.m, bool)
+        C[np.argmin(self.Hx)] = True
+        seen, conservative = set(), False
+        for it in range(1, maxiter + 1):
+            idx = np.flatnonzero(C)
+            n = idx.size
+            M = np.empty((n + 1, n + 1))
+            M[:n, :n] = K[np.ix_(idx, idx)]
+            M[:n, n] = -1.0
+            M[n, :n] = h
+            M[n, n] = 0.0
+            with _OneBlasThread():
+                sol = sla.solve(M, np.concatenate([-self.Hx[idx], [P]]), check_finite=False)
+            p = np.zeros(self.m)
+            p[idx] = sol[:n]
+            g = self.Hx - sol[n] + K[:, idx] @ sol[:n]
+            g[idx] = 0.0
+            gscale = max(np.max(np.abs(self.Hx - sol[n])), np.finfo(float).tiny)
+            neg, pen = C & (p < 0.0), (~C) & (g < -1e-13 * gscale)
+            if not (neg.any() or pen.any()):
+                st = np.where(C, SLIP_POS if eps > 0 else SLIP_NEG, OFF)
+                nan = np.full(self.m, np.nan)
+                return State(self.x, self.h, p, eps * self.mu * p, nan, g, st, sol[n], np.nan,
+                             P, eps * self.mu * P, nan, it)
+            key = C.tobytes()
+            conservative = conservative or key in seen
+            seen.add(key)
+            if conservative:
+                if neg.any() and -p.min() / max(p.max(), 1e-300) >= -g.min() / gscale:
+                    C[np.argmin(p)] = False
+                else:
+                    C[np.argmin(g)] = True
+            else:
+                C = (C & ~neg) | pen
+        raise RuntimeError("sliding active set did not converge")
 
     def step(self, prev, P, Q, maxiter=200):
         """Solve the increment from ``prev`` to the resultants (P, Q).

@@ -100,6 +100,19 @@ def test_slopes_and_beta_match_library_constants(nu):
     assert B.dundurs(G, nu, G, nu)[1] == 0.0                    # one material: decoupled
 
 
+def test_two_body_beta_matches_library_pair_constants():
+    """Body 1 the half-space, body 2 the punch: -A/4 and beta equal the library's two-body
+    N11* and N12*/N11* (``contact.elastic_punch.two_body_constants``, N12 -> N12 - N12_p)."""
+    import contact
+    from contact.elastic_punch import punch_constants, two_body_constants
+    for (E1, nu1), (E2, nu2) in (((1.0, 0.3), (3.0, 0.1)), ((2.0, 0.45), (0.5, 0.2))):
+        m1, m2 = contact.Isotropic(E1, nu1), contact.Isotropic(E2, nu2)
+        pair = two_body_constants(contact.surface_constants(m1, 0.0), punch_constants(m2))
+        A, beta = B.dundurs(E1 / (2 * (1 + nu1)), nu1, E2 / (2 * (1 + nu2)), nu2)
+        assert -A / 4 == pytest.approx(pair.N11, rel=1e-13)
+        assert beta == pytest.approx(pair.N12 / pair.N11, rel=1e-12)
+
+
 def test_panel_matrices_closed_form():
     m, h = 7, 0.3
     L, S = B.influence_matrices(m, h)
@@ -336,6 +349,28 @@ def test_rounded_flat_normal_load():
     assert np.all(st.q[st.x > 0] <= 0)
 
 
+@pytest.mark.parametrize("eps", [1.0, -1.0])
+def test_full_sliding_matches_bem_reference_and_closed_form(eps):
+    """q = eps mu p everywhere (Q = eps mu P): the pressure equals ``bem_reference``'s
+    (N11 = -A/4, N12 mu_f = -(A/4) beta eps mu: the library's equation) to rounding, and the
+    ends equal the closed form of ``PolynomialFaceOneZone`` within 0.05 h (this pins the sign
+    of the coupling term beta S q and the slip-zone edge exponents)."""
+    import bem_reference as BR
+    beta, mu, m = BETA_RIGID, 0.5, 200
+    sv = B.Solver(B.parabolic(R), WINDOW, m, A4, beta, mu)
+    st = sv.sliding(P_HERTZ, eps)
+    ref = BR.solve_bem(B.parabolic(R), WINDOW, -A4 / 4, -A4 / 4 * beta * eps * mu, P_HERTZ, m,
+                       refine=None)
+    assert np.max(np.abs(st.p - ref.p)) < 1e-12 * np.max(st.p)
+    with np.errstate(all="ignore"):
+        ends = BR.PolynomialFaceOneZone([0.0, 1.0 / R], -A4 / 4, -A4 / 4 * beta * eps * mu).solve(
+            P_HERTZ, (-1.0, 1.0))
+    assert np.allclose(B.contact_edges(st, beta, mu), ends, atol=0.05 * sv.h, rtol=0)
+    # beta < 0: the contact shifts toward the trailing side (+X for a punch dragged along -X,
+    # eps = +1), and mirrors with the direction
+    assert (ends[1] + ends[0] > 0) == (eps > 0)
+
+
 # --------------------------------------------------------------------------
 # beta != 0, Q at constant P
 # --------------------------------------------------------------------------
@@ -369,3 +404,19 @@ def test_coupled_tangential_load_conditions_and_path():
     for t in np.arange(1, 51) / 50:
         prop = sv.step(prop, P_HERTZ * t * t, Q * t * t)
     assert np.max(np.abs(prop.q - st.q)) > 0.05 * mu * np.max(st.p)
+
+
+def test_coupled_partial_slip_tends_to_sliding():
+    """Q raised to 0.99 mu P: the stick zone shrinks at every step (to 6 panels of 120) and the
+    pressure tends to the full-sliding one (1.1 % of its peak away at 0.99 mu P, 7.7 % at
+    0.89, 17 % at 0.69), q to mu p outside the last stick panels."""
+    beta, mu, m = BETA_RIGID, 0.3, 120
+    sv = B.Solver(B.parabolic(R), WINDOW, m, A4, beta, mu)
+    states = B.load_path(sv, P_HERTZ, 0.99 * mu * P_HERTZ, normal_steps=50,
+                         tangential_steps=6, keep=True)
+    sizes = [int(st.stick.sum()) for st in states[-7:]]
+    assert all(a > b for a, b in zip(sizes, sizes[1:])) and 0 < sizes[-1] <= 8
+    sl = sv.sliding(P_HERTZ, 1.0)
+    st = states[-1]
+    assert np.max(np.abs(st.p - sl.p)) < 0.02 * np.max(sl.p)
+    assert np.all(st.state[~st.stick & st.contact] == B.SLIP_POS)
