@@ -19,6 +19,7 @@ of Zhou et al. 2014):
  8. the paper's Sec. 6 claims                  (validation/report_paper.py)
  9. peer: ContactMechanics on Hertz            (validation/report_peer.py)
 10. the stress field under the surface         (validation/report_subsurface.py)
+11. partial slip and rolling (Cattaneo, Carter) (validation/report_slip.py)
 """
 from __future__ import annotations
 
@@ -40,7 +41,7 @@ from .report_doc import Doc
 OUT = Path(__file__).resolve().parent / "report"
 FIGURES = ("fig1_flat.png", "fig2_triangular.png", "fig3_parabolic.png", "fig4_cylindrical.png",
            "convergence.png", "work_precision.png", "peer_hertz.png",
-           "subsurface_friction.png")
+           "subsurface_friction.png", "partial_slip.png")
 
 
 @dataclass
@@ -58,6 +59,7 @@ def _sections():
     from . import report_numerics as RN
     from . import report_paper as RP
     from . import report_peer as RPe
+    from . import report_slip as RSl
     from . import report_subsurface as RS
     return [
         ("1", RP.section_table1),
@@ -70,6 +72,7 @@ def _sections():
         ("8", RP.section_claims),
         ("9", RPe.section_peer),
         ("10", RS.section_subsurface),
+        ("11", RSl.section_partial_slip),
     ]
 
 

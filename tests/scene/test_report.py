@@ -20,7 +20,8 @@ import matplotlib.image  # noqa: E402
 from validation import report  # noqa: E402
 
 FIGURES = ("fig1_flat.png", "fig2_triangular.png", "fig3_parabolic.png", "fig4_cylindrical.png",
-           "convergence.png", "work_precision.png", "subsurface_friction.png")
+           "convergence.png", "work_precision.png", "subsurface_friction.png",
+           "partial_slip.png")
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -78,8 +79,8 @@ def test_every_section_builds(built):
     print(f"[report] quick build {elapsed:.1f} s, sections: "
           + ", ".join(f"{k}: {v:.1f} s" for k, v in ctx.timings.items()))
     assert ctx.failures == []
-    assert set(ctx.timings) == {str(k) for k in range(1, 11)}
-    assert set(ctx.headline) == {str(k) for k in range(1, 11)}
+    assert set(ctx.timings) == {str(k) for k in range(1, 12)}
+    assert set(ctx.headline) == {str(k) for k in range(1, 12)}
 
 
 @pytest.mark.slow
@@ -87,7 +88,7 @@ def test_files_exist_and_figures_are_pictures(built):
     out, ctx, _ = built
     md = (out / "report.md").read_text(encoding="utf-8")
     html = (out / "index.html").read_text(encoding="utf-8")
-    for k in range(1, 11):
+    for k in range(1, 12):
         assert re.search(rf"^## {k}\. ", md, re.M), f"section {k} heading missing"
     referenced = set(re.findall(r"!\[[^\]]*\]\(([^)]+)\)", md))
     assert set(FIGURES) <= referenced
@@ -141,6 +142,9 @@ def test_headline_numbers_in_bounds(built):
     assert max(r[2] for r in ours) <= 1e-12 and max(r[3] for r in ours) <= 1e-12
     if st["peer"]["peer"] is not None:
         assert min(r[4] for r in st["peer"]["peer"]) <= 1e-2
+    # partial slip and rolling: Cattaneo and Carter to rounding, Coulomb on a rounded flat
+    slip = st["partial_slip"]
+    assert max(slip.values()) <= 1e-12, slip
 
 
 def test_cli_rejects_unknown_option(capsys):
