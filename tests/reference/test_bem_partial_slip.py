@@ -4,8 +4,10 @@
 The solver uses neither ``sie`` nor ``contact``'s solver (``contact`` is imported here only
 for its surface constants, to pin the sign conventions).  Checked:
 
-* conventions: the single-body slopes and the pair's beta against ``contact.SurfaceConstants``;
-  the panel matrices against quadrature;
+* conventions: the single-body slopes and the pair's beta against ``contact.SurfaceConstants``
+  and ``contact.elastic_punch.two_body_constants``; the panel matrices against quadrature;
+  beta -> -beta flips the shear only; full sliding against ``bem_reference`` (to rounding)
+  and ``bem_reference.PolynomialFaceOneZone`` (closed form);
 * beta = 0: Cattaneo (closed form; first order in h for the zone ends, the discrete
   superposition of Ciavarella and Jager to rounding; path independence of a monotone Q);
 * beta != 0 under normal load alone (Spence's problem): slip at the edges with the friction on
@@ -15,7 +17,10 @@ for its surface constants, to pin the sign conventions).  Checked:
   ``bem_partial_slip.goodman_stick_ratio``; Spence's own tables (J. Elasticity 5 (1975) 297)
   were not available, so no published digit is compared); the local exponent of the stick
   deficit;
-* beta != 0 under Q at constant P: all the conditions of the model hold, and the path matters.
+* the flat punch for large mu (slip zones ~ exp(-arctan(mu)/eps), full stick on the grid) and
+  the rounded flat (beta = 0 against ``rounded_flat_reference``);
+* beta != 0 under Q at constant P: all the conditions of the model hold, the numbers approach
+  the converged table, the path matters, and Q -> mu P tends to full sliding.
 
 Coarse grids here (m <= 400); the converged numbers (m up to 800 and Richardson) are printed by
 ``python tests/reference/bem_partial_slip.py`` and quoted in the tests' comments.
@@ -420,3 +425,17 @@ def test_coupled_partial_slip_tends_to_sliding():
     st = states[-1]
     assert np.max(np.abs(st.p - sl.p)) < 0.02 * np.max(sl.p)
     assert np.all(st.state[~st.stick & st.contact] == B.SLIP_POS)
+
+
+def test_beta_sign_flips_the_shear_only():
+    """beta -> -beta with q -> -q (and s -> -s) maps the model onto itself: the same pressure
+    and zones, the opposite shear (a soft punch on a stiff half-space, beta > 0, drags the
+    surface outward: q > 0 on the right)."""
+    for H, window, steps in ((B.flat(1.0), (-1.0, 1.0), 1), (B.parabolic(R), WINDOW, 20)):
+        out = []
+        for beta in (BETA_RIGID, -BETA_RIGID):
+            sv = B.Solver(H, window, 80, A4, beta, 0.3)
+            out.append(B.load_path(sv, 1.0, 0.0, normal_steps=steps))
+        neg, pos = out
+        assert np.allclose(neg.p, pos.p, atol=1e-12) and np.allclose(neg.q, -pos.q, atol=1e-12)
+        assert np.array_equal(neg.stick, pos.stick) and np.all(pos.q[pos.x > 0] >= 0)
