@@ -12,7 +12,6 @@ import json
 import os
 import sys
 import textwrap
-import time
 import warnings
 from pathlib import Path
 
@@ -405,7 +404,9 @@ def test_quiet_run_is_silent(tmp_path):
 
 
 @pytest.mark.slow
-def test_figures_of_a_long_sweep_are_a_coloured_family_and_fast(tmp_path):
+def test_figures_of_a_long_sweep_are_a_coloured_family_of_at_most_max_curves(tmp_path):
+    """A long sweep's figure draws MAX_CURVES cases as one coloured LineCollection (what
+    keeps it cheap to draw; its time is a benchmark's matter, not this test's)."""
     pytest.importorskip("matplotlib")
     import matplotlib
     matplotlib.use("Agg")
@@ -423,13 +424,10 @@ def test_figures_of_a_long_sweep_are_a_coloured_family_and_fast(tmp_path):
     assert len(res.cases) == 250
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        t0 = time.perf_counter()
         shown = _shown_cases(res.cases, MAX_CURVES)             # what SceneWriter keeps
         written = [path for name in ("pressure", "sigma_xx") for path in
                    _write_curve_figures(res.scene, shown, len(res.cases), tmp_path, name, [])]
-        elapsed = time.perf_counter() - t0
     assert [p.name for p in written] == ["pressure.png", "sigma_xx.png"]
-    assert elapsed < 3.0, elapsed
     assert not [w for w in caught if "layout" in str(w.message).lower()]
     fig = curve_figure(res, "pressure")
     ax = fig.axes[0]
