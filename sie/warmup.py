@@ -20,7 +20,7 @@ def warm_up() -> None:
     (:class:`sie.Equation`)."""
     from .equation import Equation, solve
     from .gaussjacobi import gauss_jacobi
-    for n in (1, 30, 300):
+    for n in (1, 30, 300):      # closed form, the small-n rule (_recurrence_rule), rung 3
         gauss_jacobi(n, -0.4, -0.6)
     gauss_jacobi(30, 6.0, 0.0)
     gauss_jacobi(120, 6.0, 0.0)      # large exponents past N_RECURRENCE_MAX: dd coefficients

@@ -483,6 +483,61 @@ def test_dispatch_sweep_weights(n, alpha, beta):
 
 
 # ---------------------------------------------------------------------------
+# 4a'. the small-n rule (Halley on the recurrence for every node, n <= N_RECURRENCE_MAX)
+#      is what gauss_jacobi takes up to its bound, and nothing beyond; where it gives up,
+#      the rungs behind it still deliver the mpmath reference
+# ---------------------------------------------------------------------------
+SMALL_N_RULE_NS = (2, 3, 20, 21, 50, 99, 100)
+
+
+@pytest.mark.parametrize("n", SMALL_N_RULE_NS)
+def test_small_n_rule_finishes_every_node(n):
+    """Every pair of the grid (and exponents within 1e-8 of -1) converges on the small-n rule,
+    with the output contract (so gauss_jacobi does not fall back to a slower rung)."""
+    from sie import gaussjacobi
+    for alpha, beta in ALL_PAIRS + [(-1.0 + 1e-8, -1.0 + 1e-8), (5.0, -0.99)]:
+        x, w, ok = gaussjacobi._recurrence_rule(n, alpha, beta)
+        assert ok, f"small-n rule gave up at n={n}, alpha={alpha!r}, beta={beta!r}"
+        assert_output_contract(x, w, n)
+
+
+def test_small_n_rule_dispatch_bound(monkeypatch):
+    """n = N_RECURRENCE_MAX takes the small-n rule, n = N_RECURRENCE_MAX + 1 does not."""
+    from sie import gaussjacobi
+    calls = []
+    rule = gaussjacobi._recurrence_rule
+
+    def spy(n, a, b):
+        calls.append(n)
+        return rule(n, a, b)
+    monkeypatch.setattr(gaussjacobi, "_recurrence_rule", spy)
+    nmax = gaussjacobi.N_RECURRENCE_MAX
+    for n in (2, nmax, nmax + 1):
+        gaussjacobi.gauss_jacobi(n, 0.3, -0.7)
+    gaussjacobi.gauss_jacobi(nmax, 6.0, 0.0)           # large exponents: rung 2
+    assert calls == [2, nmax]
+
+
+@pytest.mark.parametrize("n,alpha,beta", [(20, -0.99, 0.99), (100, -0.99, 0.99), (60, 0.3, -0.7)],
+                         ids=lambda v: f"{v:g}" if isinstance(v, float) else str(v))
+def test_small_n_rule_fallback_matches_mpmath_reference(n, alpha, beta, monkeypatch):
+    """With the small-n rule made to give up, gauss_jacobi still meets the tolerances (the
+    Golub-Welsch rule for n <= 20, rung 3 above), at the nodes the reference checks."""
+    from sie import gaussjacobi
+    monkeypatch.setattr(gaussjacobi, "_recurrence_rule",
+                        lambda n, a, b: (np.zeros(n), np.zeros(n), False))
+    x, w = gaussjacobi.gauss_jacobi(n, alpha, beta)
+    assert_output_contract(x, w, n)
+    index = ref.check_indices(n, n_edge=5, n_interior=5)
+    r = ref.refine_gauss_jacobi(n, alpha, beta, x, index)
+    assert all(r.converged) and r.sturm_index == list(index)
+    with mp.workdps(ref.DPS):
+        ex = max(float(abs(mpf(float(x[i])) - r.x[j])) for j, i in enumerate(index))
+        ew = max(float(abs(mpf(float(w[i])) - r.w[j]) / r.w[j]) for j, i in enumerate(index))
+    assert ex <= NODE_ABS_TOL and ew <= WEIGHT_REL_TOL, (ex, ew)
+
+
+# ---------------------------------------------------------------------------
 # 4b. special parameters: a one-ulp nudge must not change the rule
 #     (d x_i / d alpha is O(1), so a 2.2e-16 nudge moves the true rule by ~1e-16)
 # ---------------------------------------------------------------------------
