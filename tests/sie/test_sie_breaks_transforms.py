@@ -44,6 +44,18 @@ from mpmath.calculus.quadrature import TanhSinh
 import sie
 
 import manufactured_intervals as MI
+from _stored import StoredReferences
+
+#: the tanh-sinh references of this module, computed once (SIE_TEST_RECOMPUTE_REFS=1 computes
+#: them again, ~3 min): mpmath's quadrature of the solutions' phi, not the library's transforms
+_REFS = StoredReferences("breaks_transform_refs.json")
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _write_new_references():
+    """Values computed in this run are written back to the file at the end of the module."""
+    yield
+    _REFS.write()
 
 TOL = 1e-13
 DPS = 30
@@ -199,10 +211,14 @@ def _phi_at(sol, m, h):
 # ----------------------------------------------------------------------------
 # references
 # ----------------------------------------------------------------------------
-@functools.lru_cache(maxsize=None)
 def cauchy_ref(name, z, maxdegree=MAXDEGREE, subtract=True):
     """(1/pi) int_L psi/(t - z) dt by tanh-sinh (module docstring); ``subtract=False``: the
-    plain integral split at Re z (moderate distances only)."""
+    plain integral split at Re z (moderate distances only).  Stored (``_REFS``)."""
+    return _REFS.complex(f"cauchy|{name}|{complex(z)!r}|{maxdegree}|{subtract}",
+                         lambda: _cauchy_ref(name, z, maxdegree, subtract))
+
+
+def _cauchy_ref(name, z, maxdegree, subtract):
     sol = solved(name)
     with mp.workdps(DPS):
         z = mp.mpc(z)
@@ -229,10 +245,14 @@ def cauchy_ref(name, z, maxdegree=MAXDEGREE, subtract=True):
         return complex(tot)
 
 
-@functools.lru_cache(maxsize=None)
 def log_ref(name, x):
     """(1/pi) int_L psi(t) log|x - t| dt: per interval t = m + h u,
-    (h/pi) [log h int w phi du + int w phi log|xi - u| du], split at xi (log singularity)."""
+    (h/pi) [log h int w phi du + int w phi log|xi - u| du], split at xi (log singularity).
+    Stored (``_REFS``)."""
+    return _REFS.real(f"log|{name}|{float(x)!r}", lambda: _log_ref(name, x))
+
+
+def _log_ref(name, x):
     sol = solved(name)
     with mp.workdps(DPS):
         x = mp.mpf(x)
