@@ -180,9 +180,11 @@ and a ``rolling`` that is not a boolean.  The case's inputs carry the one given 
 ...]``).  ``ends``, ``exponents``, ``sif``, ``zones``, ``pressure`` and the diagnostics are
 those of the contact at the load (the pressure is the frictionless one, the pair
 decoupling); ``shear`` is the tangential traction q, and ``sigma_xx`` and ``"subsurface"``
-are the partial slip's fields (by superposition).  sweep.csv and the printed table have a
-column for a swept ``tangential_load`` or ``creepage`` (an input), not for the stick zones
-or the quantity that follows: those are in result.json.
+are the partial slip's fields (by superposition).  sweep.csv and the printed table have
+``tangential_load`` and (rolling) ``creepage`` (an input column where swept or given, else
+the one that follows), the number of stick zones and the ends of their span
+(``stick_x_left``, ``stick_x_right``; :mod:`contact.scene.table`): a traction curve is a
+sweep over either.
 
 **Only what is asked is computed**: curves are sampled only for the requested fields
 (sigma_XX only with ``"sigma_xx"``, the field under the surface only with ``"subsurface"``),

@@ -11,7 +11,7 @@ import numpy as np
 import contact
 
 from .run import CaseResult, SceneResult, _inputs_text
-from .table import CaseText
+from .table import CaseText, slip_cells
 from .spec import SUBSURFACE_CUT, Scene, _fmt
 
 #: The printed table shows every case of a sweep of at most this many; a longer one shows the
@@ -27,7 +27,9 @@ def format_table(result: SceneResult) -> str:
     the solver's check (the larger of its residual and load check) and the time taken.
 
     When a case has several contact zones, a ``zones`` column gives their number, and the ends,
-    exponents and SIFs shown are those of the outer ends (result.json lists every zone)."""
+    exponents and SIFs shown are those of the outer ends (result.json lists every zone).  A
+    case in partial slip or rolling adds the tangential load and the creepage that are not
+    swept and the span of its stick zones (``stick_zones`` where it has several)."""
     summary = TableSummary(result.scene, len(result.cases))
     summary.add_all(result.cases)
     return summary.text(result.timing_s)
@@ -194,6 +196,7 @@ def _fixed(digits: int):
 _CELLS = {"case": str, "zones": str,
           "x_left": _fixed(10), "x_right": _fixed(10), "alpha": _fixed(8), "beta": _fixed(8),
           "K_left": _fixed(6), "K_right": _fixed(6), "max p (sampled)": _fixed(6),
+          "stick_zones": str, "stick_x_left": _fixed(10), "stick_x_right": _fixed(10),
           "min sigma_xx": _fixed(6), "max sigma_xx": _fixed(6),
           "max shear @ depth/a": lambda v: f"{v[0]:.4g} @ {v[1]:.4g}",
           "check": lambda v: f"{v:.1e}", "time ms": lambda v: f"{v:.1f}"}
@@ -241,6 +244,11 @@ def _table_row(res: CaseResult, swept: list, outer: tuple) -> dict:
     if sif is not None:
         row["K_left"] = sif.get("left")
         row["K_right"] = sif.get("right")
+    if "stick_zones" in e:
+        # Q, the creepage (rolling) where not swept, and the stick zones' span
+        for k, v in slip_cells(e).items():
+            if k not in swept and v is not None and (k != "stick_zones" or v > 1):
+                row[k] = v
     if "sigma_xx" in e:
         row["min sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmin)
         row["max sigma_xx"] = _extreme(e["sigma_xx"]["values"], np.nanmax)

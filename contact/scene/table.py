@@ -24,6 +24,11 @@ Columns, in this order (a group only when its field is asked):
   two empty for a material without them: an anisotropic one, or a scene's
   ``[material] factory``); ``"roots"``: ``root{k}_real``, ``root{k}_imag``,
   k = 1..4 (eta1, -eta1, eta3, -eta3);
+* partial slip or steady rolling (``tangential_load`` or ``creepage`` in ``[motion]``):
+  ``tangential_load`` (Q) and, rolling, ``creepage`` (the one that follows from the other;
+  not again where it is an input column), ``stick_zones`` (their number), ``stick_x_left``
+  and ``stick_x_right`` (the left end of the first stick zone and the right end of the last:
+  the stick zone's ends where there is one; result.json has each of several);
 * the solver's diagnostics, always: ``n``, ``residual``, ``load_check``.
 
 Numbers are written as Python's repr (they read back exactly), integers as integers, an empty
@@ -40,6 +45,8 @@ from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
+
+from .spec import SLIP_INPUTS
 
 
 class CaseText(NamedTuple):
@@ -76,6 +83,7 @@ def case_text(res) -> CaseText | None:
 
 
 SUBSURFACE_COLUMNS = ("value", "X", "Y", "depth", "half_width", "depth_over_a")
+STICK_COLUMNS = ("stick_zones", "stick_x_left", "stick_x_right")
 CONSTANTS_COLUMNS = ("N11", "N12", "N21", "N22", "M12", "M21", "M22", "rayleigh_speed",
                      "eta_product", "eta_sum")
 DIAGNOSTICS_COLUMNS = ("n", "residual", "load_check")
@@ -109,6 +117,10 @@ class SweepTable:
                             ("alpha", exponents), ("beta", exponents), ("kappa", exponents),
                             ("K_left", self._sif), ("K_right", self._sif)) if on]
         self._rest = []
+        motion = scene.motion
+        if any(k in motion for k in SLIP_INPUTS):
+            self._rest += (["tangential_load"] + (["creepage"] if motion.get("rolling") else [])
+                           + list(STICK_COLUMNS))
         if "subsurface" in fields:
             self._rest += [q if k == "value" else f"{q}_{k}"
                            for q in ("max_shear", "max_tension") for k in SUBSURFACE_COLUMNS]
@@ -139,6 +151,8 @@ class SweepTable:
         if self._inputs is None:
             self._inputs = self.input_columns(res.entry["inputs"] if type(res) is not CaseText
                                               else self.scene.case(res.index).inputs)
+            # Q or the creepage given as an input is its input column, not again here
+            self._rest = [c for c in self._rest if c not in self._inputs]
         self.note_zones(text.zones if text is not None else len(res.zones))
 
     def note_zones(self, zones: int) -> None:
@@ -159,6 +173,8 @@ class SweepTable:
                     "kappa": z["index"], "K_left": sif.get("left"), "K_right": sif.get("right")}
             cells += [zone[k] for k in self._zone_keys]
         rest = dict(res.diagnostics)
+        if "stick_zones" in e:
+            rest.update(slip_cells(e))
         sub = e.get("subsurface")
         if sub is not None:
             rest.update((q if k == "value" else f"{q}_{k}", sub[q][k])
@@ -207,6 +223,15 @@ class SweepTable:
         start = 1 + len(self._inputs)
         kept = [raw[start + 1 + k] for k, key in enumerate(self._zone_keys) if key != "load"]
         return raw[:start] + kept + raw[start + 1 + len(self._zone_keys):]
+
+
+def slip_cells(entry: dict) -> dict:
+    """A partial slip or rolling case's cells: Q, the creepage, the number of stick zones
+    and the ends of their span (module docstring)."""
+    stick = entry["stick_zones"]
+    return {"tangential_load": entry["tangential_load"], "creepage": entry["creepage"],
+            "stick_zones": len(stick), "stick_x_left": stick[0][0] if stick else None,
+            "stick_x_right": stick[-1][1] if stick else None}
 
 
 def _zone_sifs(res) -> list | None:

@@ -930,6 +930,15 @@ def test_a_tangential_load_sweep_is_cattaneos_partial_slip_as_solve_gives_it():
         assert stick[0] == pytest.approx(-stick[1], abs=1e-13)
     columns, rows = res.table()                        # the swept Q is a column of sweep.csv
     assert columns[:2] == ["case", "tangential_load"] and [r[1] for r in rows] == [0.001, 0.003]
+    # ... once (an input), then the stick zone's ends (no creepage column: static)
+    assert columns.count("tangential_load") == 1 and "creepage" not in columns
+    for r, case in zip(rows, res.cases):
+        cells = dict(zip(columns, r))
+        assert cells["stick_zones"] == 1
+        assert [cells["stick_x_left"], cells["stick_x_right"]] == case.entry["stick_zones"][0]
+    from contact.scene.summary import format_table
+    printed = format_table(res)
+    assert "stick_x_left" in printed and "stick_x_right" in printed
     text = json.dumps(res.to_json())                   # JSON-ready
     assert '"stick_zones"' in text
 
@@ -960,6 +969,12 @@ def test_steady_rolling_with_a_creepage_gives_solves_tangential_load():
     assert stick[0] == pytest.approx(e["ends"][0], abs=1e-13)      # the leading edge
     assert "constants" in e and list(e)[:4] == ["inputs", "tangential_load", "creepage",
                                                 "stick_zones"]
+    # sweep.csv: the tangential load that follows from the creepage, and the stick zone
+    columns, (row,) = run_scene(s).table()
+    cells = dict(zip(columns, row))
+    assert columns.count("creepage") == 1 and cells["creepage"] == xi           # the input
+    assert cells["tangential_load"] == e["tangential_load"]
+    assert [cells["stick_x_left"], cells["stick_x_right"]] == stick
 
 
 def test_a_pair_that_couples_fails_its_partial_slip_case_by_name():
