@@ -11,7 +11,6 @@ import warnings
 from concurrent.futures import Executor
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import NamedTuple
 
 import numpy as np
 
@@ -20,7 +19,7 @@ import sie
 
 from .batch import build_once, iter_chunks
 from .processes import cyclic_gc_paused
-from .table import CaseText, case_text, sweep_table, to_dataframe
+from .table import sweep_table, to_dataframe
 from .spec import (AUTO_X_MARGIN, AUTO_X_POINTS, CURVE_FIELDS, Case, CaseError,
                    SLIP_ENTRY_KEYS, SPEED_FIELDS, SUBSURFACE_CUT, SUBSURFACE_DEPTH, SUBSURFACE_MARGIN,
                    SUBSURFACE_POINTS, Scene, SubsurfaceGrid, UNITS, XGrid, ZONE_FIELDS, _fmt)
