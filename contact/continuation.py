@@ -1089,7 +1089,9 @@ def _bisect_event(face, eq, state, P):
                 f"the contact zones cannot be followed past load {lo_state.load:.6g} (zones "
                 f"{[(z.c, z.d) for z in lo_state.zones]}): no change of the zones (an end at "
                 "an edge of the face, two zones merging, a new zone, a zone splitting) gives "
-                "a valid contact")
+                "a valid contact" + ("" if face.breaks else
+                                     "; if the slope jumps or kinks (a wedge's apex, a rounded "
+                                     "corner), pass its X positions as breaks="))
         mid = math.sqrt(lo_state.load * hi_load)
         new = _try_step(face, eq, lo_state, mid)
         if new is None:
