@@ -67,3 +67,13 @@ def pytest_sessionfinish(session):
     background = session.config.stash.get(_BACKGROUND, None)
     if background is not None:
         background.close()
+
+
+@pytest.fixture(autouse=True)
+def _mpmath_precision():
+    """mpmath's working precision restored after every test: a test that sets its own leaves
+    the next one what it found (a module's fixture may set it for the module's tests)."""
+    import mpmath
+    dps = mpmath.mp.dps
+    yield
+    mpmath.mp.dps = dps

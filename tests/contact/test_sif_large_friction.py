@@ -21,7 +21,12 @@ from mpmath import mp
 import contact
 import sie
 
-mp.dps = 40
+
+
+@pytest.fixture(autouse=True)
+def _forty_digits():
+    """The references here are taken at 40 digits (tests/conftest.py restores the default)."""
+    mp.dps = 40
 
 MAT = contact.zhou2014()
 LOAD, SPEED = 0.01, 0.3

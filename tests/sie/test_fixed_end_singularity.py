@@ -426,7 +426,9 @@ def test_mirrored_edge_crack_with_the_further_exponent():
     assert abs(sol.integral() + ref.integral()) < 1e-12
     # the transforms of the mirrored density: C(z) -> C(1 - z), V(x) -> -V(1 - x)
     z = np.array([0.3 + 0.2j, 1.0 + 1e-6j, -1e-3 + 1e-3j, 0.5 - 2.0j])
-    np.testing.assert_allclose(sol.cauchy(z), ref.cauchy(1.0 - z), rtol=1e-12, atol=1e-12)
+    # as psi above, to 1e-11: the system with the further term is ill-conditioned (its
+    # condition 2.7e9 at n = 24), and the mirrored one rounds differently (2.2e-12 at 1 + 1e-6 i)
+    np.testing.assert_allclose(sol.cauchy(z), ref.cauchy(1.0 - z), rtol=1e-11, atol=1e-12)
     x = np.array([-0.5, 1e-6, 0.3, 0.999, 1.0, 2.0])
     np.testing.assert_allclose(sol.log_potential(x), -ref.log_potential(1.0 - x), rtol=1e-12,
                                atol=1e-12)
