@@ -329,11 +329,12 @@ class ZoneEquations:
         return zones, totals, sol, (None if J is None else J * scale[None, :])
 
     @staticmethod
-    def end_uncertainty(zones, totals, jacobian, noise=_F_TOL):
-        """The largest error in an end (a length) that residuals at the rounding level
+    def end_uncertainty(zones, totals, jacobian, noise=_CONVERGED):
+        """About the largest error in an end (a length) that residuals at the rounding level
         ``noise`` leave, by the Jacobian of :meth:`solve_ends` (of the scaled residuals with
         respect to the unknowns): max over the ends of the row sums of abs(J^-1) times
-        ``noise``.  Small where the side conditions hold the ends firmly; large (abs(J^-1)
+        ``noise`` (an estimate: measured within 2-20x of the errors next to the W face's
+        merge).  Small where the side conditions hold the ends firmly; large (abs(J^-1)
         ~ 1/gap^2) where two ends are about to meet, as when two zones merge, where no n
         fixes them better.  0 without free ends (nothing to fix)."""
         if jacobian is None or jacobian.size == 0:
