@@ -37,7 +37,7 @@ from .block import Block
 from .intervals import Interval, check_intervals, per_interval, split_breaks
 from .batch import CaseRules
 from .solver import block_functionals, solve_blocks
-from .systems import solve_system
+from .systems import solve_system, solve_system_auto
 from .junctions import solve_junctions
 
 __all__ = ["Equation", "solve"]
@@ -601,13 +601,11 @@ def _is_matrix(v):
 
 def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol):
     """:func:`solve` with m x m coefficients: :func:`sie.systems.solve_system` (one interval,
-    no breaks, a given n)."""
-    for name, given in (("breaks", bool(np.size(breaks))),
-                        ('n="auto"', isinstance(n, str) or tol is not None)):
-        if given:
-            raise UnsupportedEquationError(
-                f"a system (m x m a and b) takes no {name} yet: one interval, constant "
-                "coefficients, a given n (sie.solve_system)")
+    no breaks; n given or "auto": :func:`sie.systems.solve_system_auto`)."""
+    if np.size(breaks):
+        raise UnsupportedEquationError(
+            "a system (m x m a and b) takes no breaks yet: one interval, constant "
+            "coefficients (sie.solve_system)")
     interval = (-1.0, 1.0)
     if intervals is not None:
         ivs = list(intervals)
@@ -616,6 +614,14 @@ def _solve_system(f, a, b, n, left, right, kernel, total, breaks, intervals, tol
                 f"a system (m x m a and b) is solved on one interval, got {len(ivs)}")
         interval = tuple(ivs[0])
     a = np.zeros(np.shape(b)) if np.ndim(a) == 0 and a == 0 else a
+    if isinstance(n, str) or tol is not None:
+        if not (isinstance(n, str) and n == "auto"):
+            if isinstance(n, str):
+                raise InvalidOrderError(f'n must be an integer or "auto", got {n!r}')
+            raise InvalidOrderError(f'tol is for n="auto" only (the tolerance n is chosen '
+                                    f"for), got n = {n!r} with tol = {tol!r}")
+        return solve_system_auto(f, a, b, left=left, right=right, total=total,
+                                 interval=interval, kernel=kernel, tol=tol)
     return solve_system(f, a, b, n=n, left=left, right=right, total=total, interval=interval,
                         kernel=kernel)
 
@@ -678,7 +684,7 @@ def solve(f, *, a, b, n, left, right, kernel=None, total=None, breaks=(), interv
         Coefficients, shared or one per interval; b != 0.  cot(pi alpha0) = -a/b fixes the
         exponents.  Square matrices A, B (B invertible; a scalar 0 for A = 0) make it a
         system of m equations in psi = (psi_1 .. psi_m), solved by
-        :func:`sie.solve_system` (one interval, no breaks, a given n; f returns shape
+        :func:`sie.solve_system` (one interval, no breaks, n given or "auto"; f returns shape
         (m, len(s)), ``left``/``right`` per mode, ``total`` per mode of index 1; a kernel
         returns shape (m, m) + the shape of s).
     n : int, sequence of int, or "auto"

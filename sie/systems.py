@@ -126,19 +126,21 @@ from scipy import special as sp_special
 
 from .errors import (CallableOutputError, EvaluationPointError, InconsistentEquationWarning,
                      InvalidCoefficientError, InvalidEndConditionError, InvalidIntervalError,
-                     InvalidOrderError, ResidualWarning, SideConditionError, SIEWarning,
-                     UnsupportedEquationError,
+                     InvalidOrderError, ResidualWarning, ResolutionWarning, SideConditionError,
+                     SIEWarning, UnsupportedEquationError,
                      check_finite_real, check_order, is_number)
 from .cauchy import limit_points
 from .exponents import check_coefficients, check_end, exponents_of
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jacobi_vandermonde,
                      recurrence_coefficients)
+from .auto import N_AUTO_START, check_tol, series_resolved
 from .solver import RESIDUAL_TOL
 from .system_kernel import (KERNEL_EXTRA, kernel_modes, probe_kernel, projection_matrix,
                             weighted_rule)
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
+           "solve_system_auto",
            "SystemSolution", "N_MAX_SYSTEM", "mode_cauchy_off", "mode_log_potential",
            "weight_log_potential"]
 
@@ -1147,6 +1149,65 @@ def solve_system(f, A, B, *, n, left, right, total=None, interval=(-1.0, 1.0), k
         for k, v in zip(ones, x0):
             coeffs[k][0] = v
     return _finish(modes, exps, coeffs, consistency, (c, d), n, mu0)
+
+
+def solve_system_auto(f, A, B, *, left, right, total=None, interval=(-1.0, 1.0), kernel=None,
+                      tol=None):
+    """:func:`solve_system` with n chosen: from :data:`sie.auto.N_AUTO_START` doubling until
+    every mode's series has a tail (its last 8 coefficients, in the orthonormal scale of the
+    weight with the exponents' real parts) at most ``tol`` times its largest term, the
+    chopping rule of :mod:`sie.auto`; at most :data:`N_MAX_SYSTEM` (then a ResolutionWarning
+    and the last solution).  The solution's ``n`` is what was used; the warnings are those
+    of the last solve.
+
+    Parameters
+    ----------
+    f, A, B, left, right, total, interval, kernel
+        As :func:`solve_system`.
+    tol : float, optional
+        The relative tail that counts as resolved, in [1e-15, 1e-2] (default
+        :data:`sie.auto.TOL_AUTO`).
+
+    Returns
+    -------
+    SystemSolution
+
+    References
+    ----------
+    K. Aurentz and L. N. Trefethen, "Chopping a Chebyshev series", ACM Trans. Math. Softw. 43
+    (2017) 33.
+
+    Examples
+    --------
+    >>> import numpy as np, sie
+    >>> A = np.array([[0.0, -0.3], [0.3, 0.0]])
+    >>> sol = sie.solve(lambda s: np.array([np.cos(s), np.sin(s)]), a=A, b=np.eye(2),
+    ...                 n="auto", left="bounded", right="singular")
+    >>> sol.n
+    32
+    """
+    tol = check_tol(tol)
+    n = N_AUTO_START
+    while True:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            sol = solve_system(f, A, B, n=n, left=left, right=right, total=total,
+                               interval=interval, kernel=kernel)
+        tail = max(series_resolved(np.abs(c), e.alpha.real, e.beta.real, tol)[1]
+                   for e, c in zip(sol.exponents, sol.coefficients))
+        last = 2 * n > N_MAX_SYSTEM
+        if tail <= tol or last:
+            if tail > tol:
+                warnings.warn(
+                    f"solve_system: n = {n} does not resolve the solution to tol = {tol:g} "
+                    f"(a mode's tail is {tail:.1e} of its largest term; n stops at "
+                    f"{N_MAX_SYSTEM}): f or the kernel has a feature the Jacobi basis does not "
+                    "carry (a kink or jump) or needs a larger tol", ResolutionWarning,
+                    stacklevel=3)
+            for w in caught:
+                warnings.warn(w.message, stacklevel=3)
+            return sol
+        n *= 2
 
 
 def _warn_inconsistent(modes, consistency, scales):

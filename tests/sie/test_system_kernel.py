@@ -240,3 +240,44 @@ def test_an_unresolved_kernel_is_warned_of():
         warnings.simplefilter("error", sie.ResidualWarning)
         solve_system(_f, A_C, BM, n=96, left="bounded", right="singular", interval=(C_, D_),
                      kernel=K)
+
+
+# --------------------------------------------------------------------------
+# n chosen for the user
+# --------------------------------------------------------------------------
+def _kernel_smooth(s, t):
+    return np.array([[np.exp(-s * t), 0.3 / (3.0 + s + t)],
+                     [np.sin(s + 2.0 * t), 0.2 * np.cos(s * t)]])
+
+
+@pytest.mark.parametrize("tol", [1e-13, 1e-6])
+def test_n_auto_resolves_a_system_with_complex_modes_to_its_tolerance(tol):
+    """n="auto" doubles n from 16 until every mode's tail is below tol: the solution agrees
+    with n = 128 to about tol (each mode's series converges geometrically, so the tail bounds
+    the error), with a smaller n for a larger tol."""
+    kw = dict(left="bounded", right="singular", intervals=[(C_, D_)], kernel=_kernel_smooth)
+    ref = sie.solve(_f, a=A_C, b=BM, n=128, **kw)(X)
+    sol = sie.solve(_f, a=A_C, b=BM, n="auto", tol=tol, **kw)
+    err = np.abs(sol(X) - ref).max() / np.abs(ref).max()
+    assert err <= 10 * tol, (sol.n, err)
+    assert sol.n <= (32 if tol > 1e-8 else 64), sol.n
+    if tol < 1e-8:
+        assert sie.solve(_f, a=A_C, b=BM, n="auto", tol=1e-6, **kw).n < sol.n
+
+
+def test_n_auto_warns_where_the_data_has_a_kink():
+    """f with a kink (abs(s)): the series decays only algebraically, n stops at its largest
+    power of two below N_MAX_SYSTEM and says so."""
+    from sie.systems import N_MAX_SYSTEM
+    with pytest.warns(sie.ResolutionWarning, match="does not resolve the solution"):
+        sol = sie.solve(lambda s: np.array([np.abs(s), np.cos(s)]), a=A_C, b=BM, n="auto",
+                        left="bounded", right="singular")
+    assert sol.n <= N_MAX_SYSTEM < 2 * sol.n
+
+
+@pytest.mark.parametrize("kw,match", [(dict(n="automatic"), 'integer or "auto"'),
+                                      (dict(n=8, tol=1e-8), 'tol is for n="auto" only'),
+                                      (dict(n="auto", tol=1.0), r"tol must lie in")])
+def test_n_auto_bad_input(kw, match):
+    with pytest.raises(sie.InvalidOrderError, match=match):
+        sie.solve(_f, a=A_C, b=BM, left="bounded", right="singular", **kw)

@@ -336,7 +336,6 @@ def test_solve_with_matrix_coefficients_is_the_system():
 
 @pytest.mark.parametrize("extra,match", [
     (dict(breaks=(0.2,)), "no breaks"),
-    (dict(n="auto"), 'no n="auto"'),
     (dict(intervals=[(-1.0, -0.5), (0.0, 1.0)]), "one interval, got 2"),
 ])
 def test_solve_with_matrix_coefficients_refuses_what_systems_lack(extra, match):
