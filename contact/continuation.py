@@ -77,6 +77,7 @@ _HISTORY = 4          # states (this one and earlier ones) the predictor extrapo
 _NEAR_VALLEY = 1e-2    # a valley of the gap below this (relative) is located more closely
 _BUDGET = 16           # residual evaluations a continuation step may spend, plus 2 per unknown
 _GAP_N = 2.0           # n >= _GAP_N sqrt(w / g) next to a gap g between zones of width w
+_GAP_SHARE = 1e-3      # of what the gap check forgives: the log potential's error allowed
 
 
 @dataclass(frozen=True)
@@ -639,9 +640,10 @@ def _inspect(face, eq, state, gap=True):
         p_where.append(float(X[k]))
     valley = valley_where = None
     if gap and not (len(state.zones) == 1 and face.opens_by_itself and eq.kernel is None):
-        g, X, gd, Xd = _gap_samples(face, eq, state)
+        rise = face.rise_scale(state)
+        accuracy = _gap_accuracy(eq, state, tol * rise)
+        g, X, gd, Xd = _gap_samples(face, eq, state, accuracy)
         if g.size:
-            rise = face.rise_scale(state)
             if np.min(g) < -tol * rise:
                 ok = False
             k = _valley(face, state.zones, g, X)
@@ -653,7 +655,7 @@ def _inspect(face, eq, state, gap=True):
                     h = (X[k + 1] - X[k - 1]) / 32.0
                     Xr = np.array([xv - h, xv, xv + h])
                     if np.all(outside(state.zones, Xr)):
-                        gr = _gap_at(face, eq, state, Xr)
+                        gr = _gap_at(face, eq, state, Xr, tol=accuracy)
                         gv, xv = _vertex(gr, Xr, 1)
                         if np.min(gr) < -tol * rise:
                             ok = False
@@ -826,14 +828,15 @@ def series_tail(C):
                     / np.where(top > 0.0, top, 1.0), 0.0)
 
 
-def _gap_samples(face, eq, state, m=400):
+def _gap_samples(face, eq, state, tol=None, m=400):
     """The gap g = H - v - v0 at points of the face outside the zones, from g(c_1) = 0:
     v' = a p + b Hc[p] (a = N12 mu_f, b = N11 + M12 mu_f: ``eq.a``, ``eq.b``), so across
     the zones left of X the friction term adds a times their loads, and
         g(X) = H(X) - H(c_1) - a int_{c_1}^X p + b (V(X) - V(c_1)).
     (g, X, gd, Xd): at ``m`` samples X of the face, and at the bottom Xd of each of its own
     valleys outside the zones (:meth:`contact.face.Face.dips`), in one evaluation.  A
-    layered material's kernel adds -int (K(X, t) - K(c_1, t)) p(t) dt (:mod:`contact.kernel`)."""
+    layered material's kernel adds -int (K(X, t) - K(c_1, t)) p(t) dt (:mod:`contact.kernel`).
+    ``tol``: the accuracy asked of V (:func:`_gap_accuracy`; None: to rounding)."""
     X = face.sample_points(state.zones, m)
     if X.size == 0:
         return X, X, X, X
@@ -841,7 +844,7 @@ def _gap_samples(face, eq, state, m=400):
     Xd = Xd[outside(state.zones, Xd)]
     Xa = np.concatenate([X, Xd])
     rise = face.rise_from(state.zones[0].c, Xa)
-    g = _gap_at(face, eq, state, Xa, rise)
+    g = _gap_at(face, eq, state, Xa, rise, tol)
     _stays_open(face, X, g[:X.size], rise[:X.size])
     return g[:X.size], X, g[X.size:], Xd
 
@@ -863,12 +866,12 @@ def _stays_open(face, X, g, rise):
             "give the face's extent (face=) where it ends")
 
 
-def _gap_at(face, eq, state, X, rise=None):
+def _gap_at(face, eq, state, X, rise=None, tol=None):
     """The gap at points X outside the zones (see :func:`_gap_samples`); ``rise``: H(X) -
-    H(c_1) where known."""
+    H(c_1) where known; ``tol``: the accuracy asked of V (:func:`_gap_accuracy`)."""
     zones, sol = state.zones, state.solution
     ref = zones[0].c
-    V = sol.log_potential(np.concatenate([[ref], X]))
+    V = sol.log_potential(np.concatenate([[ref], X]), tol=tol)
     g = (face.rise_from(ref, X) if rise is None else rise) + eq.b * (V[1:] - V[0])
     if eq.kernel is not None:
         K = sol.kernel_integral(eq.kernel.deflection, np.concatenate([[ref], X]))
@@ -881,6 +884,23 @@ def _gap_at(face, eq, state, X, rise=None):
             passed += np.where(X >= z.d, load, 0.0)
         g = g - eq.a * passed
     return g
+
+
+def _gap_accuracy(eq, state, forgiven):
+    """The accuracy asked of V[p] for the gap checks of ``state`` that forgive ``forgiven``
+    (:func:`_resolution` times the face's rise over the contact):
+    :meth:`sie.Solution.log_potential`'s tol, relative to (1/pi) int |p|, with int p over
+    the zones for int |p| (p >= 0, as the pressure checks ask).  g carries b (V(X) - V(c_1)),
+    off by at most 2 |b| tol (1/pi) int |p|, which is held to _GAP_SHARE of ``forgiven``:
+    the check decides as with V to rounding but for gaps within 1e-3 of its threshold, and
+    the valley it reports for the events (relative to the rise, extrapolated in the load)
+    moves by ~1e-12, far below the tolerance to which events are located (_EVENT_RTOL).
+    With breaks in the zones V is then summed on a rule graded less deeply toward them
+    (:mod:`sie.remainder`).  None (to rounding) where that scale is zero."""
+    scale = 2.0 * abs(eq.b) * sum(abs(p.integral()) for p in state.solution.pieces) / math.pi
+    if not (scale > 0.0 and forgiven > 0.0):
+        return None
+    return _GAP_SHARE * forgiven / scale
 
 
 # ------------------------------------------------------------------------------------------

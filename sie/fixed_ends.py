@@ -1245,7 +1245,7 @@ class FixedEndSolution(Solution):
         x = limit_points(x, side, self.intervals)
         return self.cauchy(x) + 1j * side * self(x)
 
-    def log_potential(self, x):
+    def log_potential(self, x, tol=None):
         """V(x) = (1/pi) int_L psi(t) log abs(x - t) dt at real x (any x; finite at the
         ends); dV/dx = -H[psi](x).
 
@@ -1257,6 +1257,9 @@ class FixedEndSolution(Solution):
         Parameters
         ----------
         x : array_like of float
+        tol : float, optional
+            As :meth:`sie.Solution.log_potential`'s; V is computed to rounding here
+            whatever it is (no pointwise correction to sum to a lower accuracy).
 
         Returns
         -------

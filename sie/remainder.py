@@ -42,10 +42,14 @@ interval (and at its ends) by ``w_rule`` with delta_phi at the nearer end subtra
 closed form of the weight's potential adds it back), its nodes grouped in clusters whose
 distances to that end span a factor 2, each summed by the expansion of log(D + d) about
 its centre (one logarithm per cluster, :func:`_log_sums`); inside from V' = -H[Psi] =
-(a Psi - r)/b integrated from the nearer end.
+(a Psi - r)/b integrated from the nearer end.  For a stated accuracy (the ``tol`` of
+:meth:`sie.Solution.log_potential`) the rule for integrals against w is made for it
+(:func:`_accuracy_rule`: graded less deeply toward the breaks, fewer nodes on the graded
+pieces), which cuts the evaluations of delta_phi by more than half.
 """
 from __future__ import annotations
 
+import copy
 import functools
 import math
 from dataclasses import dataclass, field
@@ -71,18 +75,21 @@ _LEVELS = 19          # 0.15^19 ~ 2e-16 of the piece length is left ungraded
 
 _POWERS = _GRADING ** np.arange(1, _LEVELS + 1)    # 0.15^k, k = 1.._LEVELS
 _FLOOR = 1e4 * np.finfo(float).eps                # the shortest graded step
+_DEPTH = 1e-12        # the grading stops at pieces this long relative to d (below)
 
 
-def graded_points(breaks):
-    """Breaks plus points b +- d 0.15^k (k = 1.._LEVELS), d = half the gap to the
-    neighbouring break or end: a geometric mesh toward each break (Babuska-Guo hp).
-    Ascending, inside (-1, 1)."""
-    return _graded_points(np.ascontiguousarray(breaks, dtype=float), _POWERS, _FLOOR)
+def graded_points(breaks, depth=_DEPTH):
+    """Breaks plus points b +- d 0.15^k (k = 1.._LEVELS, while d 0.15^k > depth d), d =
+    half the gap to the neighbouring break or end: a geometric mesh toward each break
+    (Babuska-Guo hp).  Ascending, inside (-1, 1)."""
+    return _graded_points(np.ascontiguousarray(breaks, dtype=float), _POWERS, _FLOOR,
+                          float(depth))
 
 
 @jit()
-def _graded_points(breaks, powers, floor):
-    """:func:`graded_points` (``powers``: 0.15^k; ``floor``: the shortest step)."""
+def _graded_points(breaks, powers, floor, depth):
+    """:func:`graded_points` (``powers``: 0.15^k; ``floor``: the shortest step; ``depth``:
+    the shortest step relative to d)."""
     nb = breaks.shape[0]
     out = np.empty(nb * (2 * powers.shape[0] + 3))
     m = 0
@@ -98,8 +105,9 @@ def _graded_points(breaks, powers, floor):
                 other = breaks[i + 1] if i < nb - 1 else 1.0
             d = 0.5 * abs(other - c)
             # r is Lipschitz across a break, so an ungraded innermost piece of length
-            # 1e-12 d costs at most ~1e-12; deeper pieces would not be resolvable in floats
-            least = max(1e-12 * d, floor)
+            # 1e-12 d (_DEPTH) costs at most ~1e-12; deeper pieces would not be resolvable
+            # in floats
+            least = max(depth * d, floor)
             for k in range(powers.shape[0]):
                 step = d * powers[k]
                 if step > least:
@@ -167,10 +175,15 @@ def _table_top(q, q_small, shift):
     return q_small + shift + math.ceil(0.2 * q) + 2
 
 
-def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details=False):
+def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details=False,
+                 hp_slope=None, innermost=True, q_end=None):
     """Composite rule for int (1-x)^alpha (1+x)^beta g on the graded mesh ``pts``, with the
-    node counts of :func:`_panels`.  End pieces carry their end's Jacobi weight in the rule;
-    elsewhere it is smooth and multiplies the Gauss-Legendre weights.
+    node counts of :func:`_panels` (``hp_slope``: nodes fewer per level deeper toward a
+    break, _HP_SLOPE where None; ``innermost`` False: the innermost piece at a break counted as the level it
+    lies at, where no point is asked for inside it; ``q_end``: q_small of the pieces graded
+    toward an end, and the nodes a piece gets beyond q dtheta / 2 for the projection's
+    polynomial part, q_small where None).  End pieces carry their end's Jacobi
+    weight in the rule; elsewhere it is smooth and multiplies the Gauss-Legendre weights.
 
     Returns the ascending nodes and their weights; with ``details`` also, per node, the
     index of its piece and 1 - x, 1 + x to full relative precision (a node of a piece
@@ -179,8 +192,10 @@ def _graded_rule(q, alpha, beta, breaks, pts, q_small=_Q_SMALL, shift=0, details
     q, q_small, shift, alpha, beta = int(q), int(q_small), int(shift), float(alpha), float(beta)
     pts = np.ascontiguousarray(pts, dtype=float)
     gaps = np.concatenate([[-1.0], np.asarray(breaks, dtype=float), [1.0]])
-    los, his, counts = _piece_counts(pts, gaps, q, q_small, shift, _HP_SLOPE, _HP_MIN,
-                                     math.log(1.0 / _GRADING))
+    slope = _HP_SLOPE if hp_slope is None else float(hp_slope)
+    los, his, counts = _piece_counts(pts, gaps, q, q_small, shift, slope, _HP_MIN,
+                                     math.log(1.0 / _GRADING), bool(innermost),
+                                     q_small if q_end is None else int(q_end))
     top = _table_top(q, q_small, shift)
     extra = tuple(sorted({int(c) for c in counts if c >= top and c != q + shift}))
     u, wu, legendre, ends = _rule_table(q, q_small, shift, alpha, beta, extra)
@@ -192,10 +207,13 @@ _LADDER = 8           # counts set by a piece's angle rise in steps of 1/8 of th
 
 
 @jit()
-def _piece_counts(pts, gaps, q, q_small, shift, hp_slope, hp_min, log_ratio):
+def _piece_counts(pts, gaps, q, q_small, shift, hp_slope, hp_min, log_ratio, keep_innermost,
+                  q_end):
     """The pieces of the mesh ``pts`` (lo, hi) and their node counts (:func:`_panels`).
     ``gaps``: -1, the breaks, +1; ``hp_slope``, ``hp_min``: the counts' fall with depth;
-    ``log_ratio``: log(1 / _GRADING)."""
+    ``log_ratio``: log(1 / _GRADING); ``keep_innermost``: the innermost piece at a break
+    keeps its count; ``q_end``: q_small of the pieces graded toward an end, and the nodes
+    beyond k for the polynomial part (below)."""
     npc = pts.shape[0] + 1
     los = np.empty(npc)
     his = np.empty(npc)
@@ -208,26 +226,26 @@ def _piece_counts(pts, gaps, q, q_small, shift, hp_slope, hp_min, log_ratio):
         if (hi - lo) > 0.2 * gap or lo == -1.0 or hi == 1.0:
             cnt = q
         else:
-            cnt = q_small + int(math.ceil(q * (hi - lo) / gap))
             # graded toward a break (not toward an end, where the weight may be singular):
             # one node fewer per level below the outermost graded piece (~0.064 of the gap)
             mid = 0.5 * (lo + hi)
             toward_end = (j == 1 and mid - gaps[0] < gaps[1] - mid) or \
                 (j == gaps.shape[0] - 1 and gaps[j] - mid < mid - gaps[j - 1])
+            cnt = (q_end if toward_end else q_small) + int(math.ceil(q * (hi - lo) / gap))
             # the innermost piece, at the break itself, keeps its count: the grading stops
             # there, and a point inside it sees the other side's innermost piece within
             # its own length
-            innermost = lo == gaps[j - 1] or hi == gaps[j]
+            innermost = keep_innermost and (lo == gaps[j - 1] or hi == gaps[j])
             if not (toward_end or innermost):
                 level = math.floor(math.log(0.2 * gap / (hi - lo)) / log_ratio)
                 cnt = max(hp_min, cnt - int(math.floor(hp_slope * level)))
             # the projection's polynomial part, cos(q theta)-like: k = q dtheta / 2 nodes
-            # and min(q_small, k) more at any depth (:func:`_panels`), rounded up to a
+            # and min(q_end, k) more at any depth (:func:`_panels`), rounded up to a
             # ladder of _LADDER steps per doubling (fewer distinct rules), at most q (which
             # integrates it exactly)
             dtheta = math.acos(max(lo, -1.0)) - math.acos(min(hi, 1.0))
             kappa = int(math.ceil(0.5 * q * dtheta))
-            poly = kappa + min(q_small, kappa)
+            poly = kappa + min(q_end, kappa)
             if poly > cnt:
                 step = max(1, poly // _LADDER)
                 cnt = min(q, step * ((poly + step - 1) // step))
@@ -305,16 +323,17 @@ def _end_grading(breaks):
                     (-1.0, breaks[0] if breaks.size else 1.0)):
         d = 0.5 * abs(end - nb)
         steps = d * _END_POWERS
-        steps = steps[steps > max(1e-12 * d, _FLOOR)]
+        steps = steps[steps > max(_DEPTH * d, _FLOOR)]
         parts.append(end - steps if end > 0.0 else end + steps)
     return np.concatenate(parts)
 
 
 @jit()
-def _end_graded_mesh(mesh, breaks, powers, floor):
+def _end_graded_mesh(mesh, breaks, powers, floor, depths):
     """The ascending mesh ``mesh`` joined with :func:`_end_grading`'s points (``powers``:
     0.15^k, k = 0.._LEVELS; ``floor``: the shortest graded step), duplicates dropped: the
-    union of ``mesh`` and ``_end_grading(breaks)`` in one call."""
+    union of ``mesh`` and ``_end_grading(breaks)`` in one call; ``depths``: (at -1, at +1)
+    the shortest step relative to d (_DEPTH in ``_end_grading``)."""
     nb = breaks.shape[0]
     out = np.empty(mesh.shape[0] + 2 * powers.shape[0])
     m = mesh.shape[0]
@@ -325,7 +344,7 @@ def _end_graded_mesh(mesh, breaks, powers, floor):
         else:
             nearest = breaks[0] if nb else 1.0
         d = 0.5 * abs(end - nearest)
-        least = max(1e-12 * d, floor)
+        least = max((depths[1] if end > 0.0 else depths[0]) * d, floor)
         for k in range(powers.shape[0]):
             step = d * powers[k]
             if step > least:
@@ -955,6 +974,80 @@ def _chebyshev_offsets(m):
     return s, lam
 
 
+# the log potential of w delta_phi to a stated accuracy (InversionRemainder.log_potential's
+# tol), by a rule for integrals against w graded less deeply toward the breaks and with
+# fewer nodes on the graded pieces than ``w_rule``
+_RULE_ROUNDING = 1e-16      # what the full w_rule leaves, relative to the correction's scale
+_LEAST_ACCURACY = 6         # an accuracy coarser than 1e-6 gets the rule of 1e-6
+_RULE_MARGIN = 10.0         # the rule for 10^-k is taken to leave this times 10^-k (it left
+                            # up to 3 times in the cases of tests/sie/test_breaks.py)
+# the Bernstein-ellipse parameter of a graded piece [c + g s, c + s] (g = _GRADING) for a
+# break at c: delta_phi's singularity lies g / (1 - g) of the piece's length beyond its end
+_RHO_GRADED = (1.0 + _GRADING) / (1.0 - _GRADING) + math.sqrt(
+    ((1.0 + _GRADING) / (1.0 - _GRADING)) ** 2 - 1.0)
+
+
+def _accuracy_level(tol):
+    """k, 10^-k <= tol, of the rule that :meth:`InversionRemainder.log_potential` uses for
+    the accuracy ``tol`` (at least _LEAST_ACCURACY); None where tol asks for what the full
+    ``w_rule`` gives (tol None, or within 10 times _RULE_ROUNDING)."""
+    if tol is None or not tol > 10.0 * _RULE_ROUNDING:
+        return None
+    return max(_LEAST_ACCURACY, math.ceil(-math.log10(tol) - 1e-9))
+
+
+_HP_SLOPE_TOL = 2.0   # nodes fewer per level deeper toward a break in a rule for tol (below)
+
+
+def _unresolved(tol, power):
+    """The largest h < 1 with h^power log(1/h) <= tol (tol < 1/e)."""
+    h = tol ** (1.0 / power)
+    for _ in range(8):              # h = (tol / log(1/h))^(1/power), a contraction
+        h = (tol / math.log(1.0 / h)) ** (1.0 / power)
+    return h
+
+
+@functools.lru_cache(maxsize=64)
+def _accuracy_rule(k, alpha, beta, m_poly):
+    """The rule for integrals against w that leaves ~10^-k of the correction's scale
+    (1/pi) int w |delta_phi| in its log potential, for the end exponents alpha, beta and a
+    projection whose polynomial part delta_phi carries has degree < m_poly: (depth toward
+    the breaks, (depth toward -1, toward +1), q_small, hp_slope, m: the nodes of a piece that
+    spans most of a gap and the Chebyshev points on the end pieces);
+    :meth:`InversionRemainder._w_parts` and :meth:`~InversionRemainder._phi_at_w_nodes` read
+    it.
+
+    delta_phi ~ A (t - c) log|t - c| at a break c.  Where the grading stops, the innermost
+    piece [c, c + h d] is left unresolved: its Gauss rule misses ~A (h d)^2 log(1/h) at most
+    (the part A (h d)^2 log(h d) s, s = (t - c) / (h d), is a polynomial it integrates;
+    s log s is what it misses, by 7e-4 with 4 nodes), so the grading stops once the innermost
+    piece is no longer than the largest h with h^2 log(1/h) <= 10^-k (steps of 0.15 down to
+    depth = 0.15 h), and the innermost piece needs no more nodes than its level's.  Toward
+    an end e the sum is over w (delta_phi - delta_phi(e)) log|v - t|, v outside, ~(1 -+ t)^(1
+    + exponent) log(1 -+ t) at most: an unresolved end piece of length h misses
+    ~h^(2 + exponent) log(1/h).  A graded piece sees the break at rho = _RHO_GRADED
+    (Bernstein ellipse), and each of its Gauss nodes cuts its error by rho^2: the full rule's
+    counts, made for _RULE_ROUNDING, are lowered by as many nodes as rho^2 fits in 10^-k /
+    _RULE_ROUNDING, and by _HP_SLOPE_TOL (not 1) per level deeper (hp refinement, Babuska &
+    Guo): a piece's error ~A len^2 rho^(-2 count) still falls by 0.15^2 rho^4 = 0.59 a level.
+    The pieces graded toward an end keep the full rule's counts: the sums beyond an end e
+    take delta_phi(e) out, so next to the other end the integrand is ~delta_phi(e) w log|v -
+    t|, with w's singularity there, and not small with A (there 8 nodes a piece left 5e-5
+    of the correction's scale); their nodes cost no evaluation of delta_phi
+    (:meth:`~InversionRemainder._phi_at_w_nodes`).  On the end pieces delta_phi is
+    interpolated from m Chebyshev points (rho = 3 + sqrt(8) there): rho^-m <= 10^-k and
+    m >= m_poly, which interpolates the polynomial part exactly; and m nodes (at least 24)
+    on a piece that spans most of a gap, not the full rule's m_poly + 24: they integrate
+    the polynomial part times the logarithm (analytic there) and the break's singularity
+    (rho >= 2.2 from such a piece, 2.2^-48 < 1e-16)."""
+    tol = 10.0 ** -k
+    depth = max(_GRADING * _unresolved(tol, 2.0), _DEPTH)
+    ends = tuple(max(_GRADING * _unresolved(tol, 2.0 + e), _DEPTH) for e in (beta, alpha))
+    cut = math.floor(math.log(tol / _RULE_ROUNDING) / (2.0 * math.log(_RHO_GRADED)))
+    m = max(int(m_poly), math.ceil(k * math.log(10.0) / math.log(3.0 + math.sqrt(8.0))))
+    return depth, ends, max(_HP_MIN, _Q_SMALL + 2 - cut), _HP_SLOPE_TOL, m
+
+
 @dataclass(eq=False)
 class InversionRemainder:
     """delta_phi, its integral, Cauchy transform and logarithmic potential (module docstring).
@@ -987,6 +1080,9 @@ class InversionRemainder:
     _far_moments: np.ndarray | None = None  # far_coefficients()
     _interp: tuple | None = None        # barycentric data of delta_phi on the w_rule pieces
     _splits: np.ndarray | None = None   # _near_splits()
+    _w_design: tuple | None = None      # w_rule made for an accuracy (_accuracy_rule), or
+                                        # None: to rounding
+    _accurate: dict = field(default_factory=dict)   # k -> _at_level(k)
 
     @classmethod
     def build(cls, piece, a, b, f, other, breaks, s, ws, fs, g_coef):
@@ -1044,9 +1140,20 @@ class InversionRemainder:
         # ungraded rule loses 5e-8 at n = 48), and so does the log potential outside
         if self._w is None:
             breaks, q = self.breaks, max(self.q, 24)
-            w_pts = _end_graded_mesh(self._w_mesh, breaks, _END_POWERS, _FLOOR)
-            tw, ww, piece_w, om_w, op_w, lo, hi, counts = _graded_rule(
-                q, self.sol.alpha, self.sol.beta, breaks, w_pts, _Q_SMALL + 2, details=True)
+            design = self._w_design
+            alpha, beta = self.sol.alpha, self.sol.beta
+            if design is None:
+                w_pts = _end_graded_mesh(self._w_mesh, breaks, _END_POWERS, _FLOOR,
+                                         np.array([_DEPTH, _DEPTH]))
+                rule = _graded_rule(q, alpha, beta, breaks, w_pts, _Q_SMALL + 2, details=True)
+            else:                       # made for an accuracy (_accuracy_rule)
+                _, ends, q_small, slope, m = design
+                w_pts = _end_graded_mesh(self._w_mesh, breaks, _END_POWERS, _FLOOR,
+                                         np.array(ends))
+                rule = _graded_rule(max(m, 24), alpha, beta, breaks, w_pts, q_small,
+                                    details=True, hp_slope=slope, innermost=False,
+                                    q_end=_Q_SMALL + 2)
+            tw, ww, piece_w, om_w, op_w, lo, hi, counts = rule
             self._w = ((tw, ww), (lo, hi, counts), (piece_w, om_w, op_w))
         return self._w
 
@@ -1140,7 +1247,8 @@ class InversionRemainder:
         _, om, op = self.w_ends
         lo_w, hi_w, counts = self.w_panels
         pts = self._w_mesh
-        m = max(int(self.q), math.ceil(_FAR_EXPONENT / math.log(3.0 + math.sqrt(8.0))))
+        m = max(int(self.q), math.ceil(_FAR_EXPONENT / math.log(3.0 + math.sqrt(8.0)))) \
+            if self._w_design is None else self._w_design[4]
         s, lam = _chebyshev_offsets(m)
         # the nodes ascend piece by piece: those on the end pieces are a prefix and a suffix
         n = tw.size
@@ -1336,8 +1444,50 @@ class InversionRemainder:
         return self._splits
 
     # -- logarithmic potential -------------------------------------------------------
-    def log_potential(self, v, ends=None, l0_values=None):
-        """(1/pi) int_{-1}^{1} w delta_phi log|v - t| dt at real v (any v).
+    def _at_level(self, k):
+        """This correction with ``w_rule`` made for 10^-k of its own scale
+        (:func:`_accuracy_rule`: graded less deeply toward the breaks, fewer nodes on the
+        graded pieces), and with its own values at that rule's nodes; made once per k (it
+        shares everything else: the 1/w rules, f, the constant)."""
+        view = self._accurate.get(k)
+        if view is None:
+            sol = self.sol
+            design = _accuracy_rule(k, sol.alpha, sol.beta, self.g_coef.size + 1)
+            view = copy.copy(self)          # the fields below replaced, the others shared
+            view._w_mesh, view._w_design = graded_points(self.breaks, design[0]), design
+            view._w = view._wphi = view._phi_w = view._phi_ends = view._log_ends = None
+            view._far_moments = view._interp = None
+            view._log_data, view._accurate = {}, {}
+            self._accurate[k] = view
+        return view
+
+    def for_accuracy(self, tol):
+        """The correction whose log potential (:meth:`log_potential`, :meth:`far_coefficients`)
+        errs by at most tol times the piece's scale (1/pi) int w |phi|, phi the whole
+        (the series plus delta_phi): self where tol is None or asks for rounding, else
+        :meth:`_at_level` for tol.  That rule leaves ~10^-k (_RULE_MARGIN 10^-k taken) of
+        delta_phi's own scale (1/pi) int w |delta_phi|, far below the piece's where the
+        series resolves the smooth part of phi (1e-4 to 1e-3 of it in tests); where
+        delta_phi's scale is not that small, k is raised by the ratio (the piece's scale
+        from below by |c_0| mu_0 = |int w phi|, else summed on the rule)."""
+        k = _accuracy_level(tol)
+        if k is None:
+            return self
+        view = self._at_level(k)
+        own = _RULE_MARGIN * 10.0 ** -k * float(np.sum(np.abs(view._w_values())))
+        sol = self.sol
+        if own <= tol * abs(sol.coefficients[0]) * sol.weight_data.mu0:
+            return view
+        tw, ww = view.w_rule
+        whole = float(np.sum(ww * np.abs(
+            jacobi_series(sol.coefficients, sol.alpha, sol.beta, tw) + view._phi_w)))
+        if own <= tol * whole:
+            return view
+        return self.for_accuracy(10.0 ** -k * tol * whole / own if whole > 0.0 else None)
+
+    def log_potential(self, v, ends=None, l0_values=None, tol=None):
+        """(1/pi) int_{-1}^{1} w delta_phi log|v - t| dt at real v (any v); with ``tol``, to
+        ~tol of the piece's scale (1/pi) int w |phi| (:meth:`for_accuracy`).
 
         |v| >= 1: the sum of ``w_rule`` with delta_phi(e) subtracted at the nearer end e and
         added back through the closed form of (1/pi) int w log|v - t| (:func:`sie.cauchy.l0`):
@@ -1351,6 +1501,10 @@ class InversionRemainder:
         the piece containing v, and int_e^v r by Gauss-Legendre split at the breaks.
         ``l0_values``: the weight's potential :func:`sie.cauchy.l0` at v where the caller
         has it."""
+        if tol is not None:
+            rem = self.for_accuracy(tol)
+            if rem is not self:
+                return rem.log_potential(v, ends, l0_values)
         v = np.asarray(v, dtype=float)
         zm1, zp1 = (v - 1.0, v + 1.0) if ends is None else (np.asarray(ends[0], dtype=float),
                                                             np.asarray(ends[1], dtype=float))
@@ -1364,10 +1518,14 @@ class InversionRemainder:
             out[inside] = self._log_inside(v[inside], zm1[inside], zp1[inside])
         return out
 
-    def far_coefficients(self):
+    def far_coefficients(self, tol=None):
         """(M_0, M_1 / 1, ..., M_K / K), M_k = int w delta_phi t^k by ``w_rule``, K =
         _LOG_FAR_TERMS: what :func:`log_far` sums the log potential at |v| >= 2 from (read-only;
-        computed once)."""
+        computed once); with ``tol``, by the rule of :meth:`for_accuracy`."""
+        if tol is not None:
+            rem = self.for_accuracy(tol)
+            if rem is not self:
+                return rem.far_coefficients()
         if self._far_moments is None:
             tw, _ = self.w_rule
             moments = np.empty(_LOG_FAR_TERMS + 1)

@@ -206,6 +206,14 @@ class Reference:
             return float(int_weighted(self.beta, self.alpha, lambda t: self.phi_mp(t) / (t - x),
                                       self.breaks) / mp.pi)
 
+    def log_outside(self, x):
+        """(1/pi) int w phi_ref log|x - t| dt for |x| > 1 (nested tanh-sinh)."""
+        with mp.workdps(OUTER_DPS):
+            x = mpf(x)
+            return float(int_weighted(self.beta, self.alpha,
+                                      lambda t: self.phi_mp(t) * mp.log(abs(x - t)),
+                                      self.breaks) / mp.pi)
+
     def integral(self):
         with mp.workdps(OUTER_DPS):
             return float(int_weighted(self.beta, self.alpha, self.phi_mp, self.breaks))
@@ -395,3 +403,67 @@ def test_outside_reference_values(left, right):
     assert (integral is None) == (ref.kappa == 1)
     if integral is not None:
         assert abs(ref.integral() / integral - 1) <= 1e-13
+
+
+# --------------------------------------------------------------------------
+# the log potential to a stated accuracy (Solution.log_potential's tol)
+# --------------------------------------------------------------------------
+# (1/pi) int psi log|x - t| dt beyond the ends, f = |s - 0.3| + cos s: Reference.log_outside
+# (nested tanh-sinh, ~20 s a value), stored in breaks_phi_refs.json on first use
+LOG_XS = (-1.001, 1.5, 3.0)
+LOG_TOLS = (1e-6, 1e-9, 1e-12)
+
+
+def _abs_scale(sol):
+    """(1/pi) int |psi| (the yardstick of log_potential's tol), by Gauss-Jacobi on the
+    pieces split at the kink (|phi| has kinks only where phi changes sign: a few digits
+    suffice for a yardstick)."""
+    al, be = sol.alpha, sol.beta
+    x, w = sie.gauss_jacobi(200, al, be)
+    return float(w @ np.abs(sol.phi(x))) / np.pi
+
+
+@pytest.mark.parametrize("left,right", CASES_3, ids=CASE_IDS_3)
+def test_log_potential_to_a_stated_accuracy(left, right):
+    """V with tol errs by at most tol (1/pi) int |psi| against V to rounding, beyond the ends
+    (1e-12 to 1e-1 beyond, at the ends, far), inside and at the breaks, and against the
+    stored mpmath references; its rule for the correction has fewer nodes (what it is for).
+    tol=None is V to rounding."""
+    ref = reference(left, right, "kink")
+    sol = ref.solve(48)
+    scale = _abs_scale(sol)
+    gaps = 10.0 ** -np.arange(1, 13)
+    x = np.concatenate([-1.0 - gaps, 1.0 + gaps, [-1.0, 1.0, -40.0, 7.0, -2.0, 2.0],
+                        np.linspace(-0.99, 0.99, 23), [BREAK, BREAK + 1e-9, BREAK - 1e-5]])
+    full = sol.log_potential(x)
+    assert np.array_equal(sol.log_potential(x, tol=None), full)
+    want = np.array([_stored(f"{left}|{right}|kink|V {v!r}", lambda v=v: ref.log_outside(v))
+                     for v in LOG_XS])
+    assert np.max(np.abs(sol.log_potential(np.array(LOG_XS)) - want)) <= 1e-13 * scale
+    rem = sol.pieces[0].remainder
+    for tol in LOG_TOLS:
+        err = float(np.max(np.abs(sol.log_potential(x, tol=tol) - full))) / scale
+        assert err <= tol, (tol, err)
+        got = sol.log_potential(np.array(LOG_XS), tol=tol)
+        assert np.max(np.abs(got - want)) <= (tol + 1e-13) * scale
+        assert rem.for_accuracy(tol).w_rule[0].size < 0.7 * rem.w_rule[0].size
+
+
+def test_log_potential_to_a_stated_accuracy_without_a_mean():
+    """int psi = 0 (kappa = 1, total 0): the piece's scale has no lower bound from c_0, so
+    it is summed on the rule; V with tol still within tol (1/pi) int |psi| of V to
+    rounding.  A tol that asks for rounding gives V to rounding; a tol that is not a
+    positive number is refused."""
+    f = RHS["kink"][0]
+    sol = sie.solve(f, a=A, b=B, n=40, left="singular", right="singular", total=0.0,
+                    breaks=(BREAK,))
+    scale = _abs_scale(sol)
+    x = np.concatenate([-1.0 - 10.0 ** -np.arange(1, 13), [1.0, 1.5, 30.0],
+                        np.linspace(-0.9, 0.9, 7)])
+    full = sol.log_potential(x)
+    for tol in LOG_TOLS:
+        assert np.max(np.abs(sol.log_potential(x, tol=tol) - full)) <= tol * scale
+    assert np.array_equal(sol.log_potential(x, tol=1e-17), full)
+    for bad in (0.0, -1e-9, float("nan"), True, "1e-9"):
+        with pytest.raises(sie.SIEInputError):
+            sol.log_potential(x, tol=bad)
