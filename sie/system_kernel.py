@@ -61,7 +61,7 @@ from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde
 
 __all__ = ["complex_jacobi_norms", "projection_matrix", "weighted_rule", "kernel_modes",
-           "KERNEL_EXTRA"]
+           "probe_kernel", "real_values", "KERNEL_EXTRA"]
 
 #: Kernel nodes beyond n per mode (as the scalar solver's rule for its kernel).
 KERNEL_EXTRA = 16
@@ -115,6 +115,18 @@ def weighted_rule(Q, n, alpha, beta):
     return y, (coef * complex_jacobi_norms(n, alpha, beta)[:, None]).T
 
 
+def real_values(name, out):
+    """A callable's output as a float array, or CallableOutputError naming ``name`` (complex
+    or not numbers)."""
+    out = np.asarray(out)
+    if out.dtype.kind == "c":
+        raise CallableOutputError(f"{name} must return real values, got complex")
+    try:
+        return out.astype(float)
+    except (TypeError, ValueError) as exc:
+        raise CallableOutputError(f"{name} must return real numbers, got {out.dtype}") from exc
+
+
 def _call_kernel(kernel, S, T, m, unbounded=CallableOutputError):
     """kernel(S, T) as a real array of shape (m, m) + S.shape, checked; an exception inside
     the kernel or a non-finite value raises ``unbounded`` (KernelSingularityError where the
@@ -123,13 +135,7 @@ def _call_kernel(kernel, S, T, m, unbounded=CallableOutputError):
         out = kernel(S, T)
     except Exception as exc:
         raise unbounded(f"kernel raised {type(exc).__name__}: {exc}") from exc
-    out = np.asarray(out)
-    if out.dtype.kind == "c":
-        raise CallableOutputError("kernel must return real values, got complex")
-    try:
-        out = out.astype(float)
-    except (TypeError, ValueError) as exc:
-        raise CallableOutputError(f"kernel must return real numbers, got {out.dtype}") from exc
+    out = real_values("kernel", out)
     want = (m, m) + S.shape
     if out.shape != want:
         raise CallableOutputError(

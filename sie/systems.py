@@ -137,7 +137,7 @@ from .jacobi import (_vandermonde_into, jacobi_norms_cached, jacobi_series, jaco
 from .auto import N_AUTO_START, check_tol, series_resolved
 from .solver import RESIDUAL_TOL
 from .system_kernel import (KERNEL_EXTRA, kernel_modes, probe_kernel, projection_matrix,
-                            weighted_rule)
+                            real_values, weighted_rule)
 
 __all__ = ["SystemModes", "system_modes", "ModeExponents", "mode_exponents", "solve_system",
            "solve_system_auto",
@@ -951,13 +951,7 @@ def _call_f(f, s, m):
         out = f(s)
     except Exception as exc:
         raise CallableOutputError(f"f raised {type(exc).__name__}: {exc}") from exc
-    out = np.asarray(out)
-    if out.dtype.kind == "c":
-        raise CallableOutputError("f must return real values, got complex")
-    try:
-        out = out.astype(float)
-    except (TypeError, ValueError) as exc:
-        raise CallableOutputError(f"f must return real numbers, got {out.dtype}") from exc
+    out = real_values("f", out)
     if out.shape != (m, s.size):
         raise CallableOutputError(
             f"f must return shape (m, len(s)) = ({m}, {s.size}) when called with an array of "
