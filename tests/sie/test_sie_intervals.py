@@ -300,7 +300,7 @@ def test_reference_rhs_against_brute_force(spec, brute):
     assert float(err.max()) <= 2e-15, err
     assert P.rhs(np.zeros((2, 3)) + P.m(0)).shape == (2, 3)
     # cross terms next to the tiny gap, and H[psi] inside the gap
-    (c0, d0), (c1, d1) = P.intervals[0], P.intervals[1]
+    (c0, d0), (c1, _) = P.intervals[0], P.intervals[1]
     for s in (d0, d0 - 2 ** -24, c0 + 0.25):
         x, y = P.cross(1, s), brute.real(f"cross|{case}|{s!r}", lambda: P.cross_mp(1, s))
         assert abs(x - y) <= 2e-15 * abs(y), (s, x, y)
