@@ -848,14 +848,11 @@ def _refollow(face, eq, refined, loads, i, tol, punch):
     return state
 
 
-#: The ends' conditioning bound (relative to the width) above this many times tol is warned
-#: of: the answer may miss tol by more than two digits.
-_ILL_CONDITIONED = 100.0
-
-
 def _refine(face, eq, state, tol, punch, n_start):
     """``state`` with n doubled (Newton from the previous zones and Jacobian) until the ends
-    and the pressure at check points agree between n and 2n to ``tol``; the doubling starts
+    and the pressure at check points agree between n and 2n to ``tol`` (or, where the ends'
+    side conditions are ill-conditioned, to what their rounding allows: warned); the doubling
+    starts
     from ``n_start`` (the state re-solved there first when it is larger than the state's)."""
     lo, hi = face.extent
     eq = replace(eq, load=state.load, n=max(eq.n, _basis_size(state)))   # the state's own n
@@ -883,22 +880,23 @@ def _refine(face, eq, state, tol, punch, n_start):
         # system (N_MAX_DENSE unknowns in all)
         last = 2 * eq2.n > _N_MAX or (len(zs) > 1 and 2 * eq2.n * len(zs) > N_MAX_DENSE)
         change = max(d_ends, d_p)
+        if change <= tol:
+            return new
         # the ends cannot be fixed better than the rounding of their side conditions allows
         # (ZoneEquations.end_uncertainty): once n and 2n agree to that, a larger n only moves
-        # them within it; where it is far above tol (two ends about to meet), say so
+        # them within it (two ends about to meet); say so instead of doubling n to its cap
         floor = ZoneEquations.end_uncertainty(zs, ts, J) / width
-        if change <= max(tol, 2.0 * floor):
-            if floor > _ILL_CONDITIONED * tol:
-                gaps = [b.c - a.d for a, b in zip(zs, zs[1:])]
-                where = (f"two zones {min(gaps):.2g} apart, about to merge" if gaps and
-                         min(gaps) < 0.01 * width else "ends close together: zones about to "
-                         "merge or split, or a zone just born")
-                warnings.warn(
-                    f"contact.solve: at load {state.load!r} the ends are fixed only to about "
-                    f"{floor:.0e} of the contact's width (tol = {tol:.2g}): the side conditions "
-                    f"that fix them are ill-conditioned there ({where}); n = {eq.n} and "
-                    f"{eq2.n} agree to {change:.2g}, and a larger n does not help",
-                    RuntimeWarning, stacklevel=4)
+        if change <= 2.0 * floor:
+            gaps = [b.c - a.d for a, b in zip(zs, zs[1:])]
+            where = (f"two zones {min(gaps):.2g} apart, about to merge" if gaps and
+                     min(gaps) < 0.01 * width else "ends close together: zones about to "
+                     "merge or split, or a zone just born")
+            warnings.warn(
+                f"contact.solve: at load {state.load!r} the ends are fixed only to about "
+                f"{floor:.0e} of the contact's width (tol = {tol:.2g}): the side conditions "
+                f"that fix them are ill-conditioned there ({where}); n = {eq.n} and "
+                f"{eq2.n} agree to {change:.2g}, and a larger n does not help",
+                RuntimeWarning, stacklevel=4)
             return new
         if last:
             hint = ("; if the slope varies on a length scale much shorter than the contact, "

@@ -40,6 +40,7 @@ def warm_up() -> None:
         sol.phi(np.array([0.1]))
         sol.cauchy(np.array([0.2, 1.5]))
         sol.log_potential(np.array([-1.5, 0.2, 1.5, 3.0]))   # by clusters, and from moments
+        sol.log_potential(np.array([-1.5, 0.2, 1.5, 3.0]), tol=1e-9)   # the coarser rules
         # a break next to an end: the graded composite rule and near-line splits
         solve(f, a=0.7, b=1.0, n=12, left="bounded", right="bounded",
               breaks=(0.9999,)).cauchy(np.array([0.2 + 1e-3j]))
