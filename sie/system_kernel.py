@@ -53,6 +53,8 @@ ch. 7 (collocation of systems with a regular kernel).  NIST DLMF, sec. 18.3 (the
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from scipy import special as sp_special
 
@@ -93,26 +95,42 @@ def _scaled_inverse(Q, a, b, x, w):
     return np.linalg.inv(S / col) * sw[None, :] / col[:, None]
 
 
+@functools.lru_cache(maxsize=64)
 def projection_matrix(N, alpha, beta):
     """(x, Pr): the N projection nodes of a mode with exponents (alpha, beta) (the roots of
     P_N^{(-Re alpha, -Re beta)}) and the N x N matrix taking g(x) to the coefficients d_j of
-    g in P_j^{(-alpha,-beta)}, j < N (:mod:`sie.systems`, "The projection")."""
+    g in P_j^{(-alpha,-beta)}, j < N (:mod:`sie.systems`, "The projection").  Memoised; a
+    mode's conjugate partner takes the conjugate matrix (the nodes are real)."""
+    if alpha.imag < 0.0:
+        x, Pr = projection_matrix(N, alpha.conjugate(), beta.conjugate())
+        return x, Pr.conj()
     ar, br = -alpha.real, -beta.real
     x, w = gauss_jacobi_cached(N, ar, br)
     if alpha.imag == 0.0 and beta.imag == 0.0:
         V = jacobi_vandermonde(N, ar, br, x)
-        return x, ((V * w[:, None]).T / jacobi_norms_cached(N, ar, br)[:, None]).astype(complex)
-    return x, _scaled_inverse(N, -alpha, -beta, x, w)
+        Pr = ((V * w[:, None]).T / jacobi_norms_cached(N, ar, br)[:, None]).astype(complex)
+    else:
+        Pr = _scaled_inverse(N, -alpha, -beta, x, w)
+    Pr.flags.writeable = False
+    return x, Pr
 
 
+@functools.lru_cache(maxsize=64)
 def weighted_rule(Q, n, alpha, beta):
     """(y, Omega): int_{-1}^{1} g(v) (1-v)^alpha (1+v)^beta P_j^{(alpha,beta)}(v) dv
-    ~ sum_q g(y_q) Omega[q, j], j < n <= Q, for smooth g (module docstring)."""
+    ~ sum_q g(y_q) Omega[q, j], j < n <= Q, for smooth g (module docstring).  Memoised; the
+    conjugate exponents take the conjugate rule."""
+    if alpha.imag < 0.0:
+        y, Om = weighted_rule(Q, n, alpha.conjugate(), beta.conjugate())
+        return y, Om.conj()
     y, om = gauss_jacobi_cached(Q, alpha.real, beta.real)
     if alpha.imag == 0.0 and beta.imag == 0.0:
-        return y, (om[:, None] * jacobi_vandermonde(n, alpha.real, beta.real, y)).astype(complex)
-    coef = _scaled_inverse(Q, alpha, beta, y, om)[:n]        # (n, Q): values -> coefficients
-    return y, (coef * complex_jacobi_norms(n, alpha, beta)[:, None]).T
+        Om = (om[:, None] * jacobi_vandermonde(n, alpha.real, beta.real, y)).astype(complex)
+    else:
+        coef = _scaled_inverse(Q, alpha, beta, y, om)[:n]    # (n, Q): values -> coefficients
+        Om = (coef * complex_jacobi_norms(n, alpha, beta)[:, None]).T
+    Om.flags.writeable = False
+    return y, Om
 
 
 def real_values(name, out):
@@ -188,4 +206,7 @@ def kernel_modes(kernel, modes, h, mid, s_local, t_local):
     S, T = np.meshgrid(mid + h * np.asarray(s_local), mid + h * np.asarray(t_local),
                        indexing="ij")
     K = _call_kernel(kernel, S, T, modes.m)
-    return h * np.einsum("ka,abst,bl->klst", modes.project, K, modes.vectors, optimize=True)
+    # (P K V)_kl on every (s, t): two small tensor products (m is small; einsum's path
+    # search alone cost about as much)
+    PK = np.tensordot(modes.project, K, axes=(1, 0))                 # (k, b, s, t)
+    return h * np.moveaxis(np.tensordot(PK, modes.vectors, axes=(1, 0)), 3, 1)
