@@ -8,6 +8,7 @@ on the test with its exact id and ``strict=True``.
 """
 
 import shutil
+import sys
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -67,6 +68,11 @@ def pytest_sessionfinish(session):
     background = session.config.stash.get(_BACKGROUND, None)
     if background is not None:
         background.close()
+    # the mpmath references computed in this run (tests/reference/_stored.py), if any module
+    # used them
+    stored = sys.modules.get("_stored")
+    if stored is not None:
+        stored.write_all()
 
 
 @pytest.fixture(autouse=True)

@@ -2,8 +2,8 @@
 slow quadratures once.
 
 ``SIE_TEST_RECOMPUTE_REFS=1`` ignores the file, computes every value again and rewrites it; a
-key missing from the file is computed and added at the end of the module (:meth:`write`, from
-an autouse module fixture).  The values are the tests' own independent references (mpmath),
+key missing from the file is computed and added when the test session ends (:func:`write_all`,
+from tests/conftest.py).  The values are the tests' own independent references (mpmath),
 never the library's output.
 """
 from __future__ import annotations
@@ -12,7 +12,10 @@ import json
 import os
 from pathlib import Path
 
-__all__ = ["StoredReferences"]
+__all__ = ["StoredReferences", "write_all"]
+
+#: Every StoredReferences made in this process, for :func:`write_all`.
+_MADE = []
 
 
 class StoredReferences:
@@ -25,6 +28,7 @@ class StoredReferences:
         self.values = {} if recompute or not self.path.exists() else \
             json.loads(self.path.read_text())
         self.new = {}
+        _MADE.append(self)
 
     def real(self, key, compute) -> float:
         """The stored float of ``key``, or float(compute())."""
@@ -46,3 +50,9 @@ class StoredReferences:
         """Rewrite the file where this run computed values (sorted keys)."""
         if self.new:
             self.path.write_text(json.dumps(dict(sorted(self.values.items())), indent=0) + "\n")
+
+
+def write_all() -> None:
+    """:meth:`StoredReferences.write` of every file opened in this process."""
+    for refs in _MADE:
+        refs.write()

@@ -51,12 +51,6 @@ _REFS = StoredReferences("breaks_phi_refs.json")
 _stored = _REFS.real
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_new_references():
-    """Values computed in this run are written back to the file at the end of the module."""
-    yield
-    _REFS.write()
-
 OUTER_DPS = 20           # outer integral of the Cauchy-transform reference
 TOL = 1e-10              # required accuracy with breaks (absolute; |phi| ~ 0.4 .. 1.5)
 

@@ -33,11 +33,6 @@ _REFS = StoredReferences("fixed_end_transform_refs.json")
 _stored = _REFS.complex
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_new_references():
-    yield
-    _REFS.write()
-
 
 # ---------------------------------------------------------------------------------------
 # mpmath references for psi given on a list of intervals as functions of the distance

@@ -36,13 +36,6 @@ _REFS = StoredReferences("junction_refs.json")
 _stored = _REFS.real
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_new_references():
-    """Values computed in this run (a new case, or SIE_TEST_RECOMPUTE_REFS=1) are written
-    back to the file at the end of the module."""
-    yield
-    _REFS.write()
-
 
 # ---------------------------------------------------------------------------------------
 # the local analysis

@@ -51,12 +51,6 @@ from _stored import StoredReferences
 _REFS = StoredReferences("breaks_transform_refs.json")
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_new_references():
-    """Values computed in this run are written back to the file at the end of the module."""
-    yield
-    _REFS.write()
-
 TOL = 1e-13
 DPS = 30
 MAXDEGREE = 5        # tanh-sinh levels per piece (the integrand is a double: more cannot help)

@@ -273,16 +273,9 @@ XREF = [
 _BRUTE = StoredReferences("intervals_brute_force_refs.json")
 
 
-@pytest.fixture(scope="module")
-def brute():
-    """The stored brute-force values; those computed in this run written back at the end."""
-    yield _BRUTE
-    _BRUTE.write()
-
-
 @pytest.mark.parametrize("spec", XREF, ids=["J=3 gaps=(1e-6,0.5) with kernel", "J=3 gaps=(1e-4,1e-6) b=-2"])
 @pytest.mark.slow
-def test_reference_rhs_against_brute_force(spec, brute):
+def test_reference_rhs_against_brute_force(spec):
     """The double-precision f (M2 + X + Gauss-Jacobi kernel sum) equals a psi + b PV + K psi
     computed by mpmath.quad at 40 digits (no (T), no (W)), to 2e-15 * max(1, |f|), also at
     points 5e-8 from the tiny gap.  Likewise every cross term alone and H[psi] in the gap."""
@@ -294,7 +287,7 @@ def test_reference_rhs_against_brute_force(spec, brute):
     pts = np.array(pts)
     fd = P.rhs(pts)
     case = case_id(P, 0)
-    fm = np.array([brute.real(f"rhs|{case}|{s!r}", lambda: P.rhs_mp(s)) for s in pts])
+    fm = np.array([_BRUTE.real(f"rhs|{case}|{s!r}", lambda: P.rhs_mp(s)) for s in pts])
     err = np.abs(fd - fm) / np.maximum(1.0, np.abs(fm))
     report("reference rhs " + case_id(P, 0), max_err=float(err.max()), max_f=float(np.abs(fm).max()))
     assert float(err.max()) <= 2e-15, err
@@ -302,10 +295,10 @@ def test_reference_rhs_against_brute_force(spec, brute):
     # cross terms next to the tiny gap, and H[psi] inside the gap
     (c0, d0), (c1, _) = P.intervals[0], P.intervals[1]
     for s in (d0, d0 - 2 ** -24, c0 + 0.25):
-        x, y = P.cross(1, s), brute.real(f"cross|{case}|{s!r}", lambda: P.cross_mp(1, s))
+        x, y = P.cross(1, s), _BRUTE.real(f"cross|{case}|{s!r}", lambda: P.cross_mp(1, s))
         assert abs(x - y) <= 2e-15 * abs(y), (s, x, y)
     g = (d0 + c1) / 2                  # the two large cross terms cancel here: scale = sum |.|
-    x, y = float(P.hilbert(np.array(g))), brute.real(f"hilbert|{case}|{g!r}",
+    x, y = float(P.hilbert(np.array(g))), _BRUTE.real(f"hilbert|{case}|{g!r}",
                                                      lambda: P.hilbert_mp(g))
     assert abs(x - y) <= 2e-15 * sum(abs(P.cross(j, g)) for j in range(P.J)), (g, x, y)
 

@@ -30,11 +30,6 @@ from sie.systems import solve_system, system_modes
 _REFS = StoredReferences("system_kernel_refs.json")
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_refs():
-    yield
-    _REFS.write()
-
 C_, D_ = -0.3, 1.7                          # an interval other than [-1, 1]
 X = np.linspace(C_, D_, 9)[1:-1]
 

@@ -34,13 +34,6 @@ V_LOCAL = (0.3, -0.55, 1.0 - 1e-6, -1.0 + 1e-6, 1.0, -1.0, 1.0 + 1e-6, -1.25, 2.
            5e4)
 
 
-@pytest.fixture(autouse=True, scope="module")
-def _write_new_references():
-    """Values computed in this run (a new case, or SIE_TEST_RECOMPUTE_REFS=1) are written
-    back to the file at the end of the module."""
-    yield
-    _REFS.write()
-
 
 def _points(c, d):
     m, h = 0.5 * (c + d), 0.5 * (d - c)
