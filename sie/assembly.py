@@ -60,6 +60,13 @@ def kernel_images(x, uj, kernel):
 _PROBE = (1e-3, 1e-6)
 
 
+def grows_toward_end(k):
+    """Per row of abs(k) sampled at the distances :data:`_PROBE` from a pair of ends: whether
+    it grows by more than 100x from the first to the second (a fixed singularity there; a
+    kernel that vanishes at the first point, to 1e-12 of the largest, is judged from 1e-300)."""
+    return k[:, 1] > 100.0 * np.maximum(k[:, 0], 1e-300 + 1e-12 * k.max())
+
+
 def probe_kernel(unknowns, explicit=()):
     """Refuse a kernel that grows without bound toward a pair of ends (s, t) (a fixed
     singularity: the generalised Cauchy kernels of edge cracks and of cracks ending at an
@@ -95,7 +102,7 @@ def _probe(kernel, rows, unknowns, explicit=frozenset()):
         raise KernelSingularityError(
             f"the kernel cannot be evaluated next to the interval ends ({exc}); the solver "
             "needs k(s, t) bounded on L x L") from exc
-    grow = k[:, 1] > 100.0 * np.maximum(k[:, 0], 1e-300 + 1e-12 * k.max())
+    grow = grows_toward_end(k)
     if np.any(grow):
         i = int(np.flatnonzero(grow)[0])
         ivs, es, ivt, et = tags[i]

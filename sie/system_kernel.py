@@ -58,6 +58,7 @@ import functools
 import numpy as np
 from scipy import special as sp_special
 
+from .assembly import _PROBE, grows_toward_end
 from .errors import CallableOutputError, KernelSingularityError
 from .gaussjacobi import gauss_jacobi_cached
 from .jacobi import jacobi_norms_cached, jacobi_vandermonde
@@ -67,7 +68,6 @@ __all__ = ["complex_jacobi_norms", "projection_matrix", "weighted_rule", "kernel
 
 #: Kernel nodes beyond n per mode (as the scalar solver's rule for its kernel).
 KERNEL_EXTRA = 16
-_PROBE = (1e-3, 1e-6)          # distances from the ends where the kernel is probed
 
 
 def complex_jacobi_norms(n, alpha, beta):
@@ -190,7 +190,7 @@ def probe_kernel(kernel, m, c, d):
             tags.append((es, et))
     K = _call_kernel(kernel, np.array(S), np.array(T), m, _NextToEnds)
     size = np.abs(K).max(axis=(0, 1)).reshape(-1, 2)
-    grow = size[:, 1] > 100.0 * np.maximum(size[:, 0], 1e-300 + 1e-12 * size.max())
+    grow = grows_toward_end(size)
     if grow.any():
         es, et = tags[int(np.flatnonzero(grow)[0])]
         raise KernelSingularityError(
