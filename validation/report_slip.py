@@ -24,11 +24,11 @@ from scipy.integrate import quad
 
 import contact
 
+from .profiles import ROUNDED_FLAT_BREAKS, rounded_flat_slope
 from .report_doc import fmt_err, fmt_t
 
 MAT = contact.Isotropic(1.0, 0.3)
 P, MU, R = 0.01, 0.5, 1.0
-B_FLAT, R_FLAT = 0.05, 1.0          # the rounded flat: flat on abs(X) < b, radius R beyond
 
 
 def _cylinder(**kw):
@@ -78,14 +78,9 @@ def _carter_rows(ratios):
     return rows
 
 
-def _rounded_flat_slope(X):
-    X = np.asarray(X, dtype=float)
-    return np.where(np.abs(X) < B_FLAT, 0.0, (np.abs(X) - B_FLAT) * np.sign(X) / R_FLAT)
-
-
 def _general_face_rows(ratios):
     """The rounded flat: Coulomb's inequality and int q = Q (no closed form)."""
-    punch = contact.ProfilePunch(_rounded_flat_slope, breaks=(-B_FLAT, B_FLAT))
+    punch = contact.ProfilePunch(rounded_flat_slope, breaks=ROUNDED_FLAT_BREAKS)
     rows = []
     for ratio in ratios:
         Q = ratio * MU * P
@@ -100,13 +95,19 @@ def _general_face_rows(ratios):
         for s0, s1 in stick:
             slip &= ~((x > s0) & (x < s1))
         equal = float(np.max(np.abs(q[slip] - MU * p[slip]))) / (MU * float(np.max(p)))
-        pts = sorted({*(e for z in stick for e in z), -B_FLAT, B_FLAT} - {lo, hi})
+        pts = sorted({*(e for z in stick for e in z), *ROUNDED_FLAT_BREAKS} - {lo, hi})
         total = quad(lambda s: float(r.tangential_traction(s)), lo, hi,
                      points=[s for s in pts if lo < s < hi], epsabs=1e-16, epsrel=1e-13,
                      limit=400)[0]
         rows.append((ratio, (stick[0][1] - stick[0][0]) / (hi - lo), max(excess, 0.0), equal,
                      abs(total / Q - 1), t))
     return rows
+
+
+def _against_closed_form(rows):
+    """Table cells of rows (Q/(mu P), computed, closed form, error, error, time)."""
+    return [(f"{r[0]:g}", f"{r[1]:.15f}", f"{r[2]:.15f}", fmt_err(r[3]), fmt_err(r[4]),
+             fmt_t(r[5])) for r in rows]
 
 
 def _figure(ctx, cat, car):
@@ -144,15 +145,11 @@ def section_partial_slip(ctx):
           "contacts at smaller loads (module `contact.partial_slip`).")
     cat = _cattaneo_rows(ratios)
     doc.table(["Q/(mu P)", "c/a computed", "c/a Cattaneo", "stick ends err / a",
-               "max abs(q - q_ref) / (mu p0)", "time"],
-              [(f"{r[0]:g}", f"{r[1]:.15f}", f"{r[2]:.15f}", fmt_err(r[3]), fmt_err(r[4]),
-                fmt_t(r[5])) for r in cat],
+               "max abs(q - q_ref) / (mu p0)", "time"], _against_closed_form(cat),
               "Fretting: the stick zone and the tangential traction (201 points).")
     car = _carter_rows(ratios)
     doc.table(["Q/(mu P)", "xi R/(mu a) computed", "Carter", "rel. err of xi",
-               "Q back from xi: rel. err", "time"],
-              [(f"{r[0]:g}", f"{r[1]:.15f}", f"{r[2]:.15f}", fmt_err(r[3]), fmt_err(r[4]),
-                fmt_t(r[5])) for r in car],
+               "Q back from xi: rel. err", "time"], _against_closed_form(car),
               "Steady rolling: the creepage for a given tractive force, and the force for "
               "that creepage (the traction curve read both ways).")
     gen = _general_face_rows(ratios[::2] if not ctx.quick else ratios[1:2])
@@ -160,8 +157,9 @@ def section_partial_slip(ctx):
                "slip zones: max abs(q - mu p)", "int q / Q - 1", "time"],
               [(f"{r[0]:g}", f"{r[1]:.6f}", fmt_err(r[2]), fmt_err(r[3]), fmt_err(r[4]),
                 fmt_t(r[5])) for r in gen],
-              f"A face with no closed form: the flat punch with rounded corners (flat on "
-              f"abs(X) < {B_FLAT:g}, radius {R_FLAT:g} beyond, breaks at the corners).")
+              "A face with no closed form: the flat punch with rounded corners of "
+              "validation/profiles.py (flat on abs(X) <= 1, radius 50 beyond, breaks at the "
+              "corners).")
     _figure(ctx, cat, car)
     doc.img("partial_slip.png", "Left: the stick zone against Q/(mu P), computed (dots) and "
             "Cattaneo's. Right: Carter's traction curve, computed (squares) and closed form.")
